@@ -1,0 +1,29 @@
+#include "mixture_generators.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <vector>
+
+namespace granmix::model {
+
+std::size_t power_law_species_count(const PowerLaw& p) {
+  if (!(p.n1_particles >= 1.0)) throw std::invalid_argument("power law: n1_particles must be >= 1");
+  if (p.theta <= 0.0) return p.max_species;  // the count never falls below one
+  // N1 k^(-θ) >= 1  <=>  k <= N1^(1/θ); guard the floor against rounding just below an integer.
+  const double kmax = std::pow(p.n1_particles, 1.0 / p.theta);
+  std::size_t k = static_cast<std::size_t>(std::floor(kmax * (1.0 + 1e-12)));
+  if (k < 1) k = 1;
+  return k < p.max_species ? k : p.max_species;
+}
+
+Mixture power_law_mixture(const PowerLaw& p) {
+  const std::size_t M = power_law_species_count(p);
+  std::vector<Species> s(M);
+  for (std::size_t j = 0; j < M; ++j) {
+    const double k = static_cast<double>(j + 1);
+    s[j] = {p.mass1 * k, p.diameter1 * std::pow(k, p.diameter_exponent), p.n1 * std::pow(k, -p.theta)};
+  }
+  return Mixture(std::move(s));
+}
+
+}  // namespace granmix::model

@@ -1,0 +1,81 @@
+#include "collision_rates.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+namespace granmix::theory {
+
+CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
+                               MomentMethod method)
+    : mix_(std::move(mix)), law_(std::move(law)), chi_(std::move(chi)), method_(method) {
+  const std::size_t N = mix_.size();
+  if (law_.size() != N || chi_.size() != N)
+    throw std::invalid_argument("collision rates: restitution and χ must have one row per species");
+  if (method_ == MomentMethod::automatic)
+    method_ = (law_.is_viscoelastic() && law_.form() != model::ViscoelasticForm::series) ? MomentMethod::quadrature
+                                                                                         : MomentMethod::series;
+  const double c = 4.0 / 3.0 * std::sqrt(2.0 * std::numbers::pi);
+  pairs_.resize(N * N);
+  for (std::size_t k = 0; k < N; ++k)
+    for (std::size_t i = 0; i < N; ++i) {
+      const double s = mix_.sigma(k, i);
+      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mix_[i].mass / (mix_[i].mass + mix_[k].mass),
+                           1.0 / mix_[k].mass, 1.0 / mix_[i].mass};
+    }
+}
+
+CollisionMoments CollisionRates::moments(std::size_t k, std::size_t i, double V) const {
+  if (!law_.is_viscoelastic()) return constant_moments(law_.eps(k, i));
+  const double a = viscoelastic_scale(law_.akappa(k, i), V);
+  return method_ == MomentMethod::series ? series_moments(a) : quadrature_moments(a, law_.form());
+}
+
+void CollisionRates::pair_terms(std::size_t k, std::size_t i, double Tk, double Ti, double& sqrtV_mu, double& X,
+                                CollisionMoments& W) const {
+  const Pair& p = pair(k, i);
+  const double V = Tk * p.inv_mk + Ti * p.inv_mi;
+  sqrtV_mu = std::sqrt(V) * p.mu;
+  X = p.mu * V / (Tk * p.inv_mk);  // (T_k m_i + T_i m_k) / (T_k (m_i + m_k))
+  W = moments(k, i, V);
+}
+
+double CollisionRates::xi(std::size_t k, std::size_t i, double Tk, double Ti) const {
+  double sqrtV_mu, X;
+  CollisionMoments W;
+  pair_terms(k, i, Tk, Ti, sqrtV_mu, X, W);
+  return pair(k, i).prefactor * sqrtV_mu * (2.0 * W.W1 - X * W.W2);
+}
+
+double CollisionRates::inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const {
+  double sqrtV_mu, X;
+  CollisionMoments W;
+  pair_terms(k, i, Tk, Ti, sqrtV_mu, X, W);
+  return pair(k, i).prefactor * sqrtV_mu * X * W.W2 * 0.5;
+}
+
+double CollisionRates::xi_species(std::size_t k, const double* T) const {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < mix_.size(); ++i) sum += xi(k, i, T[k], T[i]);
+  return sum;
+}
+
+double CollisionRates::inv_tau_v_species(std::size_t k, const double* T) const {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < mix_.size(); ++i) sum += inv_tau_v(k, i, T[k], T[i]);
+  return sum;
+}
+
+void CollisionRates::xi_all(const double* T, double* out) const {
+  for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = xi_species(k, T);
+}
+
+void CollisionRates::inv_tau_v_all(const double* T, double* out) const {
+  for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = inv_tau_v_species(k, T);
+}
+
+double CollisionRates::diffusion(std::size_t k, const double* T) const {
+  return T[k] / (inv_tau_v_species(k, T) * mix_[k].mass);
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,63 @@
+#pragma once
+// Partial cooling rates ξ_ki and inverse velocity correlation times τ_v,ki⁻¹ of a mixture
+// (v1 Appendix A), with the Enskog factor χ_ki. For a pair with moments W1, W2
+// (collision_moments.hpp), V = T_k/m_k + T_i/m_i, μ = m_i/(m_i+m_k), X = μ V m_k / T_k:
+//   ξ_ki       = (4/3)√(2π) n_i σ_ki² χ_ki √V μ (2 W1 − X W2)   = v1 (A2) / (A4)
+//   τ_v,ki⁻¹   = (4/3)√(2π) n_i σ_ki² χ_ki √V μ X W2 / 2        = v1 (A1) / (A3)
+// (derivation: the energy and momentum change of particle k averaged over the Maxwellian pair
+// measure; ⟨v_k·e | g⟩ = (m_i T_k/(m_k T_i + m_i T_k)) g·e).
+#include <cstddef>
+#include <vector>
+
+#include "collision_moments.hpp"
+#include "model/mixture.hpp"
+#include "model/restitution.hpp"
+
+namespace granmix::theory {
+
+// How viscoelastic moments are computed: the paper's series (v1 A3/A4) or a quadrature with
+// ε(y) of the law's form. `automatic`: series for form = series, quadrature otherwise.
+enum class MomentMethod { automatic, series, quadrature };
+
+class CollisionRates {
+ public:
+  CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
+                 MomentMethod method = MomentMethod::automatic);
+
+  const model::Mixture& mixture() const { return mix_; }
+  const model::Restitution& law() const { return law_; }
+  std::size_t size() const { return mix_.size(); }
+  double chi(std::size_t k, std::size_t i) const { return chi_[k][i]; }
+
+  CollisionMoments moments(std::size_t k, std::size_t i, double V) const;
+  double xi(std::size_t k, std::size_t i, double Tk, double Ti) const;         // ξ_ki
+  double inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const;  // τ_v,ki⁻¹
+
+  // ξ_k = Σ_i ξ_ki (v1 Eq. 23) and τ_v,k⁻¹ = Σ_i τ_v,ki⁻¹ (v1 Eq. 20) for all k at once.
+  void xi_all(const double* T, double* xi) const;
+  void inv_tau_v_all(const double* T, double* inv_tau) const;
+  double xi_species(std::size_t k, const double* T) const;
+  double inv_tau_v_species(std::size_t k, const double* T) const;
+
+  // D_k = T_k τ_v,k / m_k (v1 Eq. 19).
+  double diffusion(std::size_t k, const double* T) const;
+
+ private:
+  struct Pair {
+    double prefactor;  // (4/3)√(2π) n_i σ_ki² χ_ki
+    double mu;         // m_i / (m_i + m_k)
+    double inv_mk, inv_mi;
+  };
+  const Pair& pair(std::size_t k, std::size_t i) const { return pairs_[k * mix_.size() + i]; }
+  // Shared by ξ and τ: returns √V μ and X, and the moments.
+  void pair_terms(std::size_t k, std::size_t i, double Tk, double Ti, double& sqrtV_mu, double& X,
+                  CollisionMoments& W) const;
+
+  model::Mixture mix_;
+  model::Restitution law_;
+  std::vector<std::vector<double>> chi_;
+  MomentMethod method_;
+  std::vector<Pair> pairs_;
+};
+
+}  // namespace granmix::theory

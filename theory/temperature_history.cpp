@@ -1,0 +1,166 @@
+#include "temperature_history.hpp"
+
+#include <cvode/cvode.h>
+#include <cvode/cvode_ls.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "model/cvode_session.hpp"
+#include "model/errors.hpp"
+#include "model/sundials_check.hpp"
+
+namespace granmix::theory {
+
+namespace {
+// Absolute tolerance of the companions τ, I, ⟨R²⟩, J: they start at 0 and grow like t or t²,
+// so only their relative error matters; a tiny atol keeps CVODE from accepting garbage at t → 0.
+constexpr double companion_atol = 1e-60;
+}  // namespace
+
+TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<double> T0, double t_end,
+                                       TemperatureOptions opt)
+    : rates_(rates), T0_(std::move(T0)), t_end_(t_end), opt_(opt), N_(rates.size()) {
+  if (T0_.size() != N_) throw std::invalid_argument("temperatures: one initial temperature per species needed");
+  for (double T : T0_)
+    if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("temperatures: initial T_k must be positive");
+  if (!(t_end > 0.0) || !std::isfinite(t_end)) throw std::invalid_argument("temperatures: end time must be positive");
+  n_ = N_;
+  if (opt_.reduced_time) tau_at_ = n_, n_ += N_;
+  if (opt_.diffusion_integral) int_at_ = n_, n_ += N_;
+  if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += 2 * N_;
+  work_T_.resize(N_);
+  work_a_.resize(N_);
+
+  // Time unit: the fastest of cooling and velocity relaxation at t = 0 (ξ = 0 for ε = 1).
+  std::vector<double> xi(N_), itau(N_);
+  rates_.xi_all(T0_.data(), xi.data());
+  rates_.inv_tau_v_all(T0_.data(), itau.data());
+  double fastest = 0.0;
+  for (std::size_t k = 0; k < N_; ++k) fastest = std::max({fastest, std::abs(xi[k]), itau[k]});
+  t_c_ = 1.0 / fastest;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const bool gmres = opt_.solver == TemperatureOptions::Solver::gmres ||
+                     (opt_.solver == TemperatureOptions::Solver::automatic && n_ > 64);
+  model::CvodeSession cv(n_, rhs, this, gmres ? model::LinearSolver::gmres : model::LinearSolver::dense);
+  double* y = cv.data();
+  std::vector<double> atol(n_, companion_atol);
+  for (std::size_t k = 0; k < N_; ++k) y[k] = std::log(T0_[k]), atol[k] = opt_.rtol;
+  y0_.assign(y, y + n_);
+  cv.init(0.0, opt_.rtol, atol.data());
+  const double s_end = to_s(t_end_);
+  model::check_cvode(CVodeSetStopTime(cv.mem(), s_end), "CVodeSetStopTime");
+  model::check_cvode(CVodeSetMaxNumSteps(cv.mem(), 100000), "CVodeSetMaxNumSteps");
+
+  std::vector<double> dky(n_);
+  N_Vector dky_v = model::check_alloc(N_VMake_Serial(static_cast<sunindextype>(n_), dky.data(), cv.context()),
+                                      "N_VMake_Serial");
+  double s = 0.0;
+  try {
+    while (s < s_end) {
+      model::check_cvode(CVode(cv.mem(), s_end, cv.y(), &s, CV_ONE_STEP), "CVode",
+                         "temperature ODE at t = " + std::to_string(t_c_ * std::expm1(s)));
+      int q = 0;
+      double h = 0.0;
+      model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
+      model::check_cvode(CVodeGetLastStep(cv.mem(), &h), "CVodeGetLastStep");
+      Step st{s, h, q, taylor_.size()};
+      double factorial = 1.0;
+      for (int j = 0; j <= q; ++j) {
+        model::check_cvode(CVodeGetDky(cv.mem(), s, j, dky_v), "CVodeGetDky");
+        if (j > 0) factorial *= j;
+        for (std::size_t c = 0; c < n_; ++c) taylor_.push_back(dky[c] / factorial);
+      }
+      steps_.push_back(st);
+    }
+  } catch (...) {
+    N_VDestroy(dky_v);
+    throw;
+  }
+  N_VDestroy(dky_v);
+  long v = 0;
+  model::check_cvode(CVodeGetNumSteps(cv.mem(), &v), "CVodeGetNumSteps");
+  stats_.steps = v;
+  model::check_cvode(CVodeGetNumRhsEvals(cv.mem(), &v), "CVodeGetNumRhsEvals");
+  stats_.rhs_evals = v;
+  model::check_cvode(CVodeGetNumNonlinSolvIters(cv.mem(), &v), "CVodeGetNumNonlinSolvIters");
+  stats_.nonlinear_iterations = v;
+  model::check_cvode(CVodeGetNumErrTestFails(cv.mem(), &v), "CVodeGetNumErrTestFails");
+  stats_.error_test_failures = v;
+  model::check_cvode(CVodeGetNumLinIters(cv.mem(), &v), "CVodeGetNumLinIters");
+  stats_.linear_iterations = v;
+  stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+double TemperatureHistory::to_s(double t) const { return std::log1p(t / t_c_); }
+
+int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr) {
+  auto& self = *static_cast<TemperatureHistory*>(self_ptr);
+  const double* y = N_VGetArrayPointer(yv);
+  double* dy = N_VGetArrayPointer(dyv);
+  const std::size_t N = self.N_;
+  const double dt_ds = self.t_c_ * std::exp(s);  // t_c + t
+  double* T = self.work_T_.data();
+  for (std::size_t k = 0; k < N; ++k) T[k] = std::exp(y[k]);
+  for (std::size_t k = 0; k < N; ++k)
+    if (!std::isfinite(T[k]) || T[k] <= 0.0) return 1;  // recoverable: CVODE retries with a smaller step
+  self.rates_.xi_all(T, dy);
+  for (std::size_t k = 0; k < N; ++k) dy[k] *= -dt_ds;  // d ln T_k/ds = −ξ_k dt/ds (v1 Eq. 22)
+  if (self.opt_.reduced_time)
+    for (std::size_t k = 0; k < N; ++k) dy[self.tau_at_ + k] = std::sqrt(T[k] / self.T0_[k]) * dt_ds;
+  if (self.opt_.diffusion_integral || self.opt_.vacf) {
+    double* itau = self.work_a_.data();
+    self.rates_.inv_tau_v_all(T, itau);
+    for (std::size_t k = 0; k < N; ++k) {
+      const double m = self.rates_.mixture()[k].mass;
+      if (self.opt_.diffusion_integral) dy[self.int_at_ + k] = T[k] / (itau[k] * m) * dt_ds;  // D_k, v1 Eq. (19)
+      if (self.opt_.vacf) {
+        const double J = y[self.j_at_ + k];
+        dy[self.r2_at_ + k] = 2.0 * J * dt_ds;
+        dy[self.j_at_ + k] = (3.0 * T[k] / m - J * itau[k]) * dt_ds;
+      }
+    }
+  }
+  return 0;
+}
+
+double TemperatureHistory::component(double t, std::size_t c) const {
+  if (!(t >= 0.0) || t > t_end_ * (1.0 + 1e-12))
+    throw std::out_of_range("temperature history: t = " + std::to_string(t) + " outside [0, " +
+                            std::to_string(t_end_) + "]");
+  const double s = to_s(t);
+  if (s <= 0.0 || steps_.empty()) return y0_[c];
+  auto it = std::lower_bound(steps_.begin(), steps_.end(), s, [](const Step& st, double v) { return st.s_end < v; });
+  if (it == steps_.end()) --it;
+  const double x = s - it->s_end;  // <= 0, within the step
+  double v = 0.0;
+  for (int j = it->order; j >= 0; --j) v = v * x + taylor_[it->offset + j * n_ + c];
+  return v;
+}
+
+double TemperatureHistory::temperature(double t, std::size_t k) const { return std::exp(component(t, k)); }
+
+void TemperatureHistory::temperatures(double t, double* T) const {
+  for (std::size_t k = 0; k < N_; ++k) T[k] = temperature(t, k);
+}
+
+double TemperatureHistory::reduced_time(double t, std::size_t k) const {
+  if (!opt_.reduced_time) throw std::logic_error("temperature history: reduced time was not integrated");
+  return component(t, tau_at_ + k);
+}
+
+double TemperatureHistory::diffusion_integral(double t, std::size_t k) const {
+  if (!opt_.diffusion_integral) throw std::logic_error("temperature history: ∫D dt was not integrated");
+  return component(t, int_at_ + k);
+}
+
+double TemperatureHistory::msd_vacf(double t, std::size_t k) const {
+  if (!opt_.vacf) throw std::logic_error("temperature history: the VACF ODE was not integrated");
+  return component(t, r2_at_ + k);
+}
+
+}  // namespace granmix::theory
