@@ -34,6 +34,7 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += 2 * N_;
   work_T_.resize(N_);
   work_a_.resize(N_);
+  work_xi_.resize(N_);
 
   // Time unit: the fastest of cooling and velocity relaxation at t = 0 (ξ = 0 for ε = 1).
   std::vector<double> xi(N_), itau(N_);
@@ -108,8 +109,9 @@ int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr)
   for (std::size_t k = 0; k < N; ++k) T[k] = std::exp(y[k]);
   for (std::size_t k = 0; k < N; ++k)
     if (!std::isfinite(T[k]) || T[k] <= 0.0) return 1;  // recoverable: CVODE retries with a smaller step
-  self.rates_.xi_all(T, dy);
-  for (std::size_t k = 0; k < N; ++k) dy[k] *= -dt_ds;  // d ln T_k/ds = −ξ_k dt/ds (v1 Eq. 22)
+  double* xi = self.work_xi_.data();
+  self.rates_.xi_all(T, xi);
+  for (std::size_t k = 0; k < N; ++k) dy[k] = -xi[k] * dt_ds;  // d ln T_k/ds = −ξ_k dt/ds (v1 Eq. 22)
   if (self.opt_.reduced_time)
     for (std::size_t k = 0; k < N; ++k) dy[self.tau_at_ + k] = std::sqrt(T[k] / self.T0_[k]) * dt_ds;
   if (self.opt_.diffusion_integral || self.opt_.vacf) {
@@ -121,7 +123,9 @@ int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr)
       if (self.opt_.vacf) {
         const double J = y[self.j_at_ + k];
         dy[self.r2_at_ + k] = 2.0 * J * dt_ds;
-        dy[self.j_at_ + k] = (3.0 * T[k] / m - J * itau[k]) * dt_ds;
+        // A tagged velocity decays at the momentum-relaxation rate τ_v⁻¹ + ξ_k/2 (physics.md §3:
+        // (A1) is that rate minus ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant.
+        dy[self.j_at_ + k] = (3.0 * T[k] / m - J * (itau[k] + 0.5 * xi[k])) * dt_ds;
       }
     }
   }

@@ -5,9 +5,11 @@
 // Optional companions integrated with the same solver (only when asked for):
 //   reduced time       τ_k(t) = ∫₀ᵗ √(T_k/T_k(0)) dt'          (v1 Eq. 17, Fig. 1 t_s)
 //   diffusion integral I_k(t) = ∫₀ᵗ D_k dt'                     (v1 Eq. 21, long-time MSD = 6 I_k)
-//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − J/τ_v,k  (physics.md §3)
+//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − J (τ_v,k⁻¹ + ξ_k/2)  (physics.md §3, corrected:
+//                      the tagged velocity decays at the momentum-relaxation rate, not at τ_v,k⁻¹)
 // The whole solution is kept as CVODE's own interpolating polynomials (Nordsieck data of every
 // step), so any time up to t_end is available at solver accuracy.
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -48,6 +50,8 @@ class TemperatureHistory {
 
   // s = ln(1 + t/t_c), dt/ds = t_c + t.
   double to_s(double t) const;
+  double to_t(double s) const { return t_c_ * std::expm1(s); }
+  double dt_ds(double s) const { return t_c_ * std::exp(s); }
 
  private:
   struct Step {
@@ -68,7 +72,7 @@ class TemperatureHistory {
   std::vector<double> taylor_;
   std::vector<double> y0_;
   SolverStats stats_;
-  mutable std::vector<double> work_T_, work_a_;
+  mutable std::vector<double> work_T_, work_a_, work_xi_;
 };
 
 }  // namespace granmix::theory

@@ -1,0 +1,90 @@
+#include "msd.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "model/errors.hpp"
+#include "model/gsl_setup.hpp"
+
+namespace granmix::theory {
+
+MsdMethod parse_msd_method(const std::string& name) {
+  if (name == "eq17") return MsdMethod::eq17;
+  if (name == "vacf") return MsdMethod::vacf;
+  if (name == "longtime") return MsdMethod::longtime;
+  if (name == "closed") return MsdMethod::closed;
+  throw std::invalid_argument("unknown MSD method '" + name + "'");
+}
+
+const char* to_string(MsdMethod m) {
+  switch (m) {
+    case MsdMethod::eq17: return "eq17";
+    case MsdMethod::vacf: return "vacf";
+    case MsdMethod::longtime: return "longtime";
+    case MsdMethod::closed: return "closed";
+  }
+  return "?";
+}
+
+namespace {
+
+struct Eq17Integrand {
+  const TemperatureHistory* h;
+  std::size_t k;
+  double tau_t;  // τ_k(t)
+  std::vector<double> T;
+
+  // In s₁: D_k(t₁) [1 − exp(−x)] dt₁/ds₁, x = (τ_k(t) − τ_k(t₁)) / τ̂_v,k(t₁) (v1 Eqs. 17–18).
+  double operator()(double s1) {
+    const double t1 = h->to_t(s1);
+    h->temperatures(t1, T.data());
+    const CollisionRates& r = h->rates();
+    const double inv_tau = r.inv_tau_v_species(k, T.data());
+    const double D = T[k] / (inv_tau * r.mixture()[k].mass);                          // v1 Eq. (19)
+    const double tau_hat = std::sqrt(T[k] / h->initial()[k]) / inv_tau;               // v1 Eq. (18)
+    const double x = std::max(0.0, tau_t - h->reduced_time(t1, k)) / tau_hat;
+    return D * -std::expm1(-x) * h->dt_ds(s1);
+  }
+};
+
+}  // namespace
+
+double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
+  if (t <= 0.0) return 0.0;
+  model::use_gsl_return_codes();
+  struct Workspace {
+    gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
+    ~Workspace() { gsl_integration_workspace_free(w); }
+  };
+  thread_local Workspace ws;
+  if (ws.w == nullptr) throw NumericalError("gsl_integration_workspace_alloc failed");
+  Eq17Integrand integrand{&h, k, h.reduced_time(t, k), std::vector<double>(h.species())};
+  gsl_function f{[](double s, void* p) { return (*static_cast<Eq17Integrand*>(p))(s); }, &integrand};
+  double result = 0.0, abserr = 0.0;
+  // 1e-9 relative: ten times below the solver's own error, a thousand below the 1e-6 asked for.
+  const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, 1e-9, 1000, GSL_INTEG_GAUSS21, ws.w, &result, &abserr);
+  if (status != GSL_SUCCESS)
+    throw NumericalError(std::string("MSD Eq. (17) quadrature (gsl_integration_qag) at t = ") + std::to_string(t) +
+                         ": " + gsl_strerror(status));
+  return 6.0 * result;
+}
+
+double msd_closed(double D0, double tau_v0, double tau0, double t) {
+  if (!std::isfinite(tau0)) return 6.0 * D0 * (t + tau_v0 * std::expm1(-t / tau_v0));  // elastic: Ornstein–Uhlenbeck
+  const double L = std::log1p(t / tau0);
+  // physics.md §3 (v2 Eq. 22); 1 − (1+t/τ₀)^(−p) written with expm1 for small t.
+  return 6.0 * D0 * (tau0 * L + tau_v0 * std::expm1(-(tau0 / tau_v0) * L));
+}
+
+double msd_closed_longtime(double D0, double tau0, double t) { return 6.0 * D0 * tau0 * std::log1p(t / tau0); }
+
+double msd_total(const model::Mixture& mix, const std::vector<double>& partial) {
+  double s = 0.0;
+  for (std::size_t k = 0; k < mix.size(); ++k) s += mix[k].density * partial[k];
+  return s / mix.total_density();
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,34 @@
+#pragma once
+// Mean-squared displacement of species k (physics.md §3):
+//   eq17      v1 Eq. (17): 6∫₀ᵗ D_k(t₁)[1 − exp(−(τ_k(t)−τ_k(t₁))/τ̂_v,k(t₁))] dt₁, by adaptive
+//             Gauss–Kronrod quadrature (GSL QAG, 21 points) in s₁ = ln(1+t₁/t_c) on the dense
+//             CVODE solution; relative error 1e-9 requested (1e-6 required).
+//   longtime  v1 Eq. (21): 6∫₀ᵗ D_k dt₁ (integrated with the temperatures).
+//   vacf      the velocity-autocorrelation ODE (integrated with the temperatures).
+//   closed    settled ratios (v2 Eq. 22, rebuilt): 6D_k(0){τ₀ ln(1+t/τ₀) − τ_v,k(0)[1 − (1+t/τ₀)^(−τ₀/τ_v,k(0))]}
+//   total     v1 Eq. (16): Σ n_k ⟨R_k²⟩ / n.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "temperature_history.hpp"
+
+namespace granmix::theory {
+
+enum class MsdMethod { eq17, vacf, longtime, closed };
+MsdMethod parse_msd_method(const std::string& name);  // throws std::invalid_argument
+const char* to_string(MsdMethod m);
+
+// Needs a history integrated with reduced_time = true.
+double msd_eq17(const TemperatureHistory& h, std::size_t k, double t);
+
+// Closed form with settled ratios; tau0 = ∞ (elastic gas) gives 6D[t − τ_v(1 − e^(−t/τ_v))].
+double msd_closed(double D0, double tau_v0, double tau0, double t);
+
+// Long-time closed form (v2 Eq. 23): 6 D_k(0) τ₀ ln(1 + t/τ₀).
+double msd_closed_longtime(double D0, double tau0, double t);
+
+// Total MSD (v1 Eq. 16) from partial MSDs.
+double msd_total(const model::Mixture& mix, const std::vector<double>& partial);
+
+}  // namespace granmix::theory
