@@ -27,3 +27,16 @@ Mixture power_law_mixture(const PowerLaw& p) {
 }
 
 }  // namespace granmix::model
+
+namespace granmix::model {
+
+Mixture montanero_garzo_binary(double mu, double delta, double w, double n_star) {
+  if (!(mu > 0 && delta > 0 && w > 0 && n_star >= 0))
+    throw std::invalid_argument("Montanero–Garzó parameters: μ, δ, w must be positive and n* >= 0");
+  const double s12 = 0.5 * (w + 1.0);
+  const double n = (n_star > 0 ? n_star : 1.0) / (s12 * s12 * s12);
+  const double x1 = delta / (1.0 + delta);
+  return Mixture({{mu, w, x1 * n}, {1.0, 1.0, (1.0 - x1) * n}});
+}
+
+}  // namespace granmix::model

@@ -25,3 +25,12 @@ Mixture power_law_mixture(const PowerLaw& p);
 std::size_t power_law_species_count(const PowerLaw& p);
 
 }  // namespace granmix::model
+
+namespace granmix::model {
+
+// Montanero–Garzó binary parameters (MG Sec. 3): μ = m_1/m_2, δ = n_1/n_2, w = σ_11/σ_22,
+// n* = n σ_12³. Units: m_2 = 1, σ_22 = 1. With n* = 0 (dilute) the total density is set to
+// n σ_12³ = 1; every ratio is independent of it, absolute times are not.
+Mixture montanero_garzo_binary(double mu, double delta, double w, double n_star);
+
+}  // namespace granmix::model

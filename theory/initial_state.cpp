@@ -42,13 +42,13 @@ std::vector<double> aged(double T_hot, const CollisionRates& rates) {
 
 }  // namespace
 
-std::vector<double> initial_temperatures(const InitialState& init, const CollisionRates& rates) {
+std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates) {
   const std::size_t N = rates.size();
   switch (init.kind) {
-    case InitialState::Kind::equal: return std::vector<double>(N, 1.0);
-    case InitialState::Kind::hcs: return settled_temperatures(rates).T;
-    case InitialState::Kind::aged: return aged(init.T_hot, rates);
-    case InitialState::Kind::explicit_list:
+    case model::InitialState::Kind::equal: return std::vector<double>(N, 1.0);
+    case model::InitialState::Kind::hcs: return settled_temperatures(rates).T;
+    case model::InitialState::Kind::aged: return aged(init.T_hot, rates);
+    case model::InitialState::Kind::explicit_list:
       if (init.values.size() != N) throw InputError("initial temperatures: one value per species needed");
       return init.values;
   }

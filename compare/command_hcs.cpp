@@ -1,0 +1,116 @@
+// granmix hcs: the settled (HCS) state of a mixture (design.md §3), in two forms:
+//   --mass m1,m2,… --diameter … --density … --eps E [--nstar N] [--json]
+//   --mu μ --delta δ --w w --alpha α [--alpha11 --alpha22 --alpha12] [--nstar N] [--json]
+// Fields this build computes: T_ratio_maxwell (v1 Eq. A2), D_ratio (v1 Eq. 19), tau0 = 2/ξ at
+// ⟨T⟩ = 1. The first-Sonine fields come with the Sonine solver; absent fields are omitted.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "commands.hpp"
+#include "model/enskog.hpp"
+#include "model/errors.hpp"
+#include "model/mixture_generators.hpp"
+#include "theory/diffusion.hpp"
+
+namespace granmix::compare {
+
+namespace {
+
+struct HcsOptions {
+  std::vector<double> mass, diameter, density;
+  double eps = -1.0, nstar = 0.0;
+  double mu = 0, delta = 0, w = 0, alpha = -1, alpha11 = -1, alpha22 = -1, alpha12 = -1;
+  bool json = false;
+};
+
+void require(bool ok, const std::string& msg) {
+  if (!ok) throw InputError("hcs: " + msg);
+}
+
+model::Mixture listed_mixture(const HcsOptions& o) {
+  require(!o.mass.empty() && o.mass.size() == o.diameter.size() && o.mass.size() == o.density.size(),
+          "--mass, --diameter and --density need one value per species each");
+  std::vector<model::Species> s;
+  for (std::size_t k = 0; k < o.mass.size(); ++k) {
+    require(o.mass[k] > 0 && o.diameter[k] > 0 && o.density[k] > 0,
+            "species " + std::to_string(k + 1) + ": mass, diameter and density must be positive");
+    s.push_back({o.mass[k], o.diameter[k], o.density[k]});
+  }
+  model::Mixture mix(std::move(s));
+  if (o.nstar > 0) {  // rescale the total density so that n σ_12³ = n* (σ_11 for one species)
+    const double s12 = mix.sigma(0, mix.size() > 1 ? 1 : 0);
+    const double scale = o.nstar / (mix.total_density() * s12 * s12 * s12);
+    for (std::size_t k = 0; k < mix.size(); ++k) mix = mix.with_density(k, mix[k].density * scale);
+  }
+  return mix;
+}
+
+model::Restitution mg_restitution(const HcsOptions& o) {
+  const bool pairs = o.alpha11 >= 0 || o.alpha22 >= 0 || o.alpha12 >= 0;
+  if (!pairs) {
+    require(o.alpha >= 0 && o.alpha <= 1, "--alpha must lie in [0, 1]");
+    return model::Restitution::constant(2, o.alpha);
+  }
+  require(o.alpha < 0, "give either --alpha or all of --alpha11, --alpha22, --alpha12");
+  for (double a : {o.alpha11, o.alpha22, o.alpha12}) require(a >= 0 && a <= 1, "--alpha11/22/12 must each lie in [0, 1]");
+  return model::Restitution::constant_matrix({{o.alpha11, o.alpha12}, {o.alpha12, o.alpha22}});
+}
+
+int run(const HcsOptions& o) {
+  const bool listed = !o.mass.empty() || !o.diameter.empty() || !o.density.empty();
+  const bool mg = o.mu > 0 || o.delta > 0 || o.w > 0;
+  require(listed != mg, "use one form: --mass/--diameter/--density/--eps, or --mu/--delta/--w/--alpha");
+  require(o.nstar >= 0 && o.nstar < 1.9, "--nstar must lie in [0, 1.9) (n σ_12³ below close packing)");
+  if (listed) require(o.eps >= 0 && o.eps <= 1, "--eps must lie in [0, 1]");
+  if (mg) require(o.mu > 0 && o.delta > 0 && o.w > 0, "--mu, --delta and --w must all be positive");
+  const model::Mixture mix = listed ? listed_mixture(o) : model::montanero_garzo_binary(o.mu, o.delta, o.w, o.nstar);
+  const model::Restitution law = listed ? model::Restitution::constant(mix.size(), o.eps) : mg_restitution(o);
+  auto chi = o.nstar > 0 ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
+  const theory::CollisionRates rates(mix, law, std::move(chi));
+  const theory::SettledDiffusion d = theory::settled_diffusion(rates);
+  // τ₀ needs an absolute density: it is omitted for the dilute MG form and for a gas that does not cool.
+  const bool has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
+  if (o.json) {
+    nlohmann::ordered_json j;  // keys in the order of design.md §3
+    j["species"] = nlohmann::ordered_json::array();
+    for (std::size_t k = 0; k < mix.size(); ++k)
+      j["species"].push_back(nlohmann::ordered_json{{"T_ratio_maxwell", d.T[k] / d.T[0]}, {"D_ratio", d.D_ratio[k]}});
+    if (has_tau0) j["tau0"] = d.tau0;
+    std::printf("%s\n", j.dump().c_str());
+    return 0;
+  }
+  std::printf("%-8s %-14s %-14s %-14s %-22s %-22s\n", "species", "mass", "diameter", "density", "T_ratio_maxwell", "D_ratio");
+  for (std::size_t k = 0; k < mix.size(); ++k)
+    std::printf("%-8zu %-14.8g %-14.8g %-14.8g %-22.17g %-22.17g\n", k + 1, mix[k].mass, mix[k].diameter, mix[k].density,
+                d.T[k] / d.T[0], d.D_ratio[k]);
+  if (has_tau0)
+    std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);
+  else
+    std::printf("tau0 not given (%s)\n", std::isfinite(d.tau0) ? "dilute MG form: no absolute density" : "no cooling");
+  return 0;
+}
+
+}  // namespace
+
+std::function<int()> add_hcs_command(CLI::App& app) {
+  CLI::App* cmd = app.add_subcommand("hcs", "settled (HCS) temperature ratios, diffusion ratios and τ0 of a mixture");
+  auto o = std::make_shared<HcsOptions>();
+  cmd->add_option("--mass", o->mass, "masses m1,m2,…")->delimiter(',');
+  cmd->add_option("--diameter", o->diameter, "diameters σ1,σ2,…")->delimiter(',');
+  cmd->add_option("--density", o->density, "number densities n1,n2,…")->delimiter(',');
+  cmd->add_option("--eps", o->eps, "restitution coefficient (all pairs)");
+  cmd->add_option("--mu", o->mu, "MG mass ratio m1/m2");
+  cmd->add_option("--delta", o->delta, "MG concentration ratio n1/n2");
+  cmd->add_option("--w", o->w, "MG size ratio σ11/σ22");
+  cmd->add_option("--alpha", o->alpha, "MG restitution coefficient (all pairs)");
+  cmd->add_option("--alpha11", o->alpha11, "MG restitution 1-1");
+  cmd->add_option("--alpha22", o->alpha22, "MG restitution 2-2");
+  cmd->add_option("--alpha12", o->alpha12, "MG restitution 1-2");
+  cmd->add_option("--nstar", o->nstar, "reduced density n σ12³ (Enskog χ from MG Eq. 26); 0 = dilute");
+  cmd->add_flag("--json", o->json, "one JSON object on stdout");
+  return [o]() { return run(*o); };
+}
+
+}  // namespace granmix::compare

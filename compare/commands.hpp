@@ -1,0 +1,19 @@
+#pragma once
+// The subcommands of `granmix` (design.md §3). Each registers its options on the CLI11 app and
+// returns the process exit code: 0 success, 1 comparison failed, 2 bad input, 3 numerical failure.
+#include <CLI/CLI.hpp>
+
+#include <functional>
+#include <string>
+
+namespace granmix::compare {
+
+// The command line as typed, for provenance headers.
+const std::string& command_line();
+void set_command_line(int argc, char** argv);
+
+// Each returns the action to run once the command line has parsed.
+std::function<int()> add_theory_command(CLI::App& app);
+std::function<int()> add_hcs_command(CLI::App& app);
+
+}  // namespace granmix::compare

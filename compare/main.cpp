@@ -1,0 +1,53 @@
+// granmix — kinetic theory of freely cooling granular gas mixtures side by side with DSMC.
+// Command line of design.md §3. Exit codes: 0 success, 1 a comparison failed its tolerance,
+// 2 bad input or usage, 3 numerical failure.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <map>
+#include <stdexcept>
+
+#include "commands.hpp"
+#include "granmix_version.hpp"
+#include "model/errors.hpp"
+
+int main(int argc, char** argv) {
+  using namespace granmix;
+  compare::set_command_line(argc, argv);
+  CLI::App app{"granmix: kinetic theory of granular gas mixtures beside DSMC"};
+  app.set_version_flag("--version", std::string(granmix::version) + " (git " + granmix::git_sha + ")");
+  app.require_subcommand(1);
+  std::map<std::string, std::function<int()>> actions;
+  actions["theory"] = compare::add_theory_command(app);
+  actions["hcs"] = compare::add_hcs_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);  // prints the message
+    return 2;
+  }
+  try {
+    for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub->get_name())();
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "granmix: %s\n", e.what());
+    return 2;
+  } catch (const std::invalid_argument& e) {  // a model constructor refused a value the user gave
+    std::fprintf(stderr, "granmix: %s\n", e.what());
+    return 2;
+  } catch (const NumericalError& e) {
+    std::fprintf(stderr, "granmix: numerical failure: %s\n", e.what());
+    return 3;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "granmix: %s\n", e.what());
+    return 3;
+  }
+  return 2;
+}

@@ -1,0 +1,18 @@
+#pragma once
+// The '#' lines every output file starts with (design.md §4): granmix version and git SHA, scene
+// name and SHA-256, seed, fidelity, date, command.
+#include <string>
+
+namespace granmix::compare {
+
+struct Provenance {
+  std::string scene_name, scene_file, scene_sha256;
+  std::string seed = "none (theory is deterministic)";
+  std::string fidelity = "n/a";
+  std::string command;
+};
+
+std::string provenance_header(const Provenance& p);
+std::string utc_now_iso8601();
+
+}  // namespace granmix::compare

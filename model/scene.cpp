@@ -1,0 +1,268 @@
+#include "scene.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <regex>
+#include <sstream>
+
+#include "errors.hpp"
+#include "mixture_generators.hpp"
+#include "toml_fields.hpp"
+
+namespace granmix::model {
+
+namespace {
+
+constexpr double huge = 1e300;
+
+Mixture read_mixture(TomlFields& f) {
+  const bool list = f.has("species"), law = f.has("power_law");
+  if (list == law) f.fail("species", "give exactly one of 'species' (a list) or 'power_law' (a table)", "species, power_law");
+  if (law) {
+    TomlFields p = f.sub("power_law");
+    PowerLaw pl;
+    pl.n1 = p.positive("n1");
+    pl.theta = p.number("theta", 0.0, 20.0);
+    pl.n1_particles = p.number("n1_particles", 1.0, 1e15);
+    pl.diameter_exponent = p.number("diameter_exponent", 0.0, 1.0, 1.0 / 3.0);
+    pl.mass1 = p.positive("mass1", 1.0);
+    pl.diameter1 = p.positive("diameter1", 1.0);
+    pl.max_species = p.count("max_species", 1, 1000000, 100000);
+    p.finish();
+    return power_law_mixture(pl);
+  }
+  const toml::node* n = f.node("species");
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->empty()) f.fail("species", "expected a non-empty array of tables", "[{mass = …, diameter = …, density = …}, …]");
+  std::vector<Species> out;
+  for (const toml::node& e : *a) {
+    if (!e.is_table()) f.fail_at(e, "species", "element is not a table", "{mass = …, diameter = …, density = …}");
+    TomlFields s(*e.as_table(), f.file(), "mixture.species[" + std::to_string(out.size() + 1) + "]");
+    out.push_back({s.positive("mass"), s.positive("diameter"), s.positive("density")});
+    s.finish();
+  }
+  return Mixture(std::move(out));
+}
+
+Restitution read_collisions(TomlFields& f, const Mixture& mix, bool& enskog) {
+  enskog = f.flag("enskog", false);
+  const toml::node* n = f.node("restitution");
+  const std::string allowed = "a number in [0, 1], a symmetric N×N matrix, or {viscoelastic = Aκ^(2/5), form = …}";
+  if (n == nullptr) f.fail("restitution", "missing", allowed);
+  if (n->is_number()) {
+    const double e = f.number("restitution", 0.0, 1.0);
+    return Restitution::constant(mix.size(), e);
+  }
+  if (n->is_table()) {
+    TomlFields v = f.sub("restitution");
+    // Aκ^(2/5) of the 1–1 pair; 10 is far beyond any material (v1 uses 0.09).
+    const double ak = v.number("viscoelastic", 0.0, 10.0);
+    const auto form = parse_viscoelastic_form(v.choice("form", {"exact", "series", "pade"}, "exact"));
+    v.finish();
+    return Restitution::viscoelastic(mix, ak, form);
+  }
+  const toml::array* rows = n->as_array();
+  if (rows == nullptr || rows->size() != mix.size()) f.fail("restitution", "expected a scalar or one row per species", allowed);
+  std::vector<std::vector<double>> eps;
+  for (const toml::node& row : *rows) {
+    const toml::array* r = row.as_array();
+    if (r == nullptr || r->size() != mix.size()) f.fail_at(row, "restitution", "each row needs one value per species", allowed);
+    eps.emplace_back();
+    for (const toml::node& e : *r) {
+      if (!e.is_number()) f.fail_at(e, "restitution", "matrix element is not a number", allowed);
+      const double v = e.value<double>().value();
+      if (!(v >= 0.0 && v <= 1.0)) f.fail_at(e, "restitution", "matrix element " + format_number(v) + " out of range", allowed);
+      eps.back().push_back(v);
+    }
+  }
+  for (std::size_t k = 0; k < eps.size(); ++k)
+    for (std::size_t i = 0; i < k; ++i)
+      if (eps[k][i] != eps[i][k]) f.fail("restitution", "matrix is not symmetric", allowed);
+  return Restitution::constant_matrix(std::move(eps));
+}
+
+InitialState read_initial(TomlFields& f, std::size_t species) {
+  InitialState s;
+  const toml::node* n = f.node("temperatures");
+  const std::string allowed = "\"equal\", \"hcs\", \"aged\" (with hot = T) or a list of one positive T per species";
+  if (n == nullptr || n->is_string()) {
+    const std::string kind = f.choice("temperatures", {"equal", "hcs", "aged"}, "equal");
+    s.kind = kind == "equal" ? InitialState::Kind::equal : kind == "hcs" ? InitialState::Kind::hcs : InitialState::Kind::aged;
+    if (s.kind == InitialState::Kind::aged) s.T_hot = f.number("hot", 1.0 + 1e-9, 1e12);
+  } else {
+    s.kind = InitialState::Kind::explicit_list;
+    s.values = f.numbers("temperatures", std::numeric_limits<double>::min(), huge);
+    if (s.values.size() != species)
+      f.fail("temperatures", "list has " + std::to_string(s.values.size()) + " values for " + std::to_string(species) + " species", allowed);
+  }
+  if (s.kind != InitialState::Kind::aged && f.has("hot")) f.fail("hot", "only used with temperatures = \"aged\"", "");
+  return s;
+}
+
+std::vector<double> grid(TomlFields& f, const std::string& spacing_key, double lo, double hi) {
+  const double start = f.number("from", lo, hi);
+  const double end = f.number("to", lo, hi);
+  const std::size_t points = f.count("points", 1, 100000, std::nullopt);
+  const std::string spacing = f.choice(spacing_key, {"log", "linear"}, "linear");
+  if (points > 1 && !(end > start)) f.fail("to", "must be larger than 'from'", "to > from");
+  if (spacing == "log" && !(start > 0.0)) f.fail("from", "log spacing needs from > 0", "from > 0");
+  std::vector<double> v(points);
+  for (std::size_t j = 0; j < points; ++j) {
+    const double u = points == 1 ? 0.0 : static_cast<double>(j) / static_cast<double>(points - 1);
+    v[j] = spacing == "log" ? start * std::pow(end / start, u) : start + (end - start) * u;
+  }
+  return v;
+}
+
+std::vector<double> read_times(TomlFields& f) {
+  std::vector<double> t;
+  if (f.has("times")) {
+    t = f.numbers("times", std::numeric_limits<double>::min(), 1e15);
+    for (std::size_t j = 1; j < t.size(); ++j)
+      if (!(t[j] > t[j - 1])) f.fail("times", "must increase strictly", "increasing positive times");
+    return t;
+  }
+  const double end = f.number("end", 1e-12, 1e15);
+  const std::size_t points = f.count("points", 1, 100000, 60);
+  const std::string spacing = f.choice("spacing", {"log", "linear"}, "log");
+  const double start = f.number("start", 1e-12, end, spacing == "log" ? end * 1e-6 : end / points);
+  for (std::size_t j = 0; j < points; ++j) {
+    const double u = points == 1 ? 1.0 : static_cast<double>(j) / static_cast<double>(points - 1);
+    t.push_back(spacing == "log" ? start * std::pow(end / start, u) : start + (end - start) * u);
+  }
+  return t;
+}
+
+Observables read_observables(TomlFields& f) {
+  Observables o;
+  o.temperatures = f.flag("temperatures", false);
+  o.msd = f.flag("msd", false);
+  o.rescaled_time = f.flag("rescaled_time", false);
+  o.d_ratio = f.flag("d_ratio", false);
+  o.gamma = f.flag("gamma", false);
+  if (f.has("tamsd")) {
+    TomlFields t = f.sub("tamsd");
+    o.tamsd = true;
+    o.tamsd_measurement_time = t.positive("measurement_time");
+    t.finish();
+  }
+  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd))
+    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, rescaled_time, d_ratio, gamma, tamsd");
+  return o;
+}
+
+TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
+  TheorySettings s;
+  s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
+  s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
+  // 1e-14: below it CVODE works at rounding level; 1e-3: above it no comparison means anything.
+  s.rtol = f.number("rtol", 1e-14, 1e-3, 1e-11);
+  s.tracer = f.flag("tracer", false);
+  if (f.has("sweep")) {
+    TomlFields w = f.sub("sweep");
+    Sweep sw;
+    const std::string p = w.choice("parameter", {"eps", "density"});
+    sw.parameter = p == "eps" ? Sweep::Parameter::eps : Sweep::Parameter::density;
+    if (sw.parameter == Sweep::Parameter::density) {
+      sw.species = w.count("species", 1, mix.size(), std::nullopt) - 1;
+      sw.values = grid(w, "spacing", std::numeric_limits<double>::min(), huge);
+    } else {
+      sw.values = grid(w, "spacing", 0.0, 1.0);
+    }
+    w.finish();
+    s.sweep = sw;
+  }
+  return s;
+}
+
+void check_combinations(const Scene& s, TomlFields& top) {
+  const auto& o = s.observables;
+  const bool settled_start = s.initial.kind == InitialState::Kind::hcs || s.theory.tracer;
+  if (s.theory.sweep && (o.temperatures || o.msd || o.rescaled_time || o.gamma || o.tamsd))
+    top.fail("theory", "a sweep gives settled D_k/D_1 only", "observables.d_ratio with theory.sweep");
+  if (s.theory.sweep && !o.d_ratio) top.fail("observables", "a sweep needs d_ratio = true", "d_ratio");
+  if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
+  if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
+  if (s.theory.msd == "closed" && !settled_start)
+    top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
+  if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())
+    top.fail("theory", "msd = \"closed\" needs a constant restitution coefficient", "eq17, vacf, longtime");
+  if (o.tamsd && (!settled_start || s.restitution.is_viscoelastic()))
+    top.fail("observables", "tamsd uses the settled-state model", "initial.temperatures = \"hcs\" or theory.tracer, constant ε");
+  if (o.tamsd && !s.times.empty() && s.times.back() >= o.tamsd_measurement_time)
+    top.fail("observables", "tamsd lags (the time grid) must stay below measurement_time", "time.end < measurement_time");
+  if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps && s.restitution.is_viscoelastic())
+    top.fail("theory", "an ε sweep needs a constant restitution coefficient", "collisions.restitution = number");
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(path + ": cannot open the scene file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path) {
+  Scene s;
+  s.file = path;
+  s.text = read_file(path);
+  toml::table root;
+  try {
+    root = toml::parse(s.text, path);
+  } catch (const toml::parse_error& e) {
+    throw InputError(path + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+  }
+  TomlFields top(root, path, "");
+  {
+    TomlFields t = top.sub("scene");
+    s.name = t.text("name");
+    if (!std::regex_match(s.name, std::regex("[A-Za-z0-9._-]+")))
+      t.fail("name", "not usable as a folder name", "letters, digits, '.', '_', '-'");
+    s.source = t.text("source", "");
+    s.title = t.text("title", "");
+    t.finish();
+  }
+  {
+    TomlFields t = top.sub("mixture");
+    try {
+      s.mixture = read_mixture(t);
+    } catch (const std::invalid_argument& e) {
+      t.fail("species", e.what(), "");
+    }
+    t.finish();
+  }
+  {
+    TomlFields t = top.sub("collisions");
+    s.restitution = read_collisions(t, s.mixture, s.enskog);
+    t.finish();
+  }
+  if (top.has("initial")) {
+    TomlFields t = top.sub("initial");
+    s.initial = read_initial(t, s.mixture.size());
+    t.finish();
+  }
+  {
+    TomlFields t = top.sub("observables");
+    s.observables = read_observables(t);
+    t.finish();
+  }
+  if (top.has("theory")) {
+    TomlFields t = top.sub("theory");
+    s.theory = read_theory(t, s.mixture);
+    t.finish();
+  }
+  if (top.has("time") || !s.theory.sweep) {
+    TomlFields t = top.sub("time");
+    s.times = read_times(t);
+    t.finish();
+  }
+  check_combinations(s, top);
+  top.finish();
+  return s;
+}
+
+}  // namespace granmix::model

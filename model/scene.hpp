@@ -1,0 +1,55 @@
+#pragma once
+// A scene: one figure or table of a paper (design.md §4). The schema is documented in
+// compare/scenes/README.md; load_scene() refuses anything else with file:line: key: message.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "initial_state.hpp"
+#include "mixture.hpp"
+#include "restitution.hpp"
+
+namespace granmix::model {
+
+struct Observables {
+  bool temperatures = false;   // column T (species 0: ⟨T⟩)
+  bool msd = false;            // column msd (species 0: total MSD, v1 Eq. 16)
+  bool rescaled_time = false;  // column t_s (v1 Fig. 1)
+  bool d_ratio = false;        // column D_ratio = D_k/D_1 (in time, or settled along a sweep)
+  bool gamma = false;          // column gamma = T_1/T_2 (species 0 row)
+  bool tamsd = false;          // columns lag, tamsd (lags = the time grid)
+  double tamsd_measurement_time = 0.0;
+};
+
+struct Sweep {
+  enum class Parameter { eps, density } parameter = Parameter::eps;
+  std::size_t species = 0;  // density: 0-based species whose density is swept
+  std::vector<double> values;
+};
+
+struct TheorySettings {
+  std::string msd = "eq17";        // eq17 | vacf | longtime | closed
+  std::string moments = "auto";    // viscoelastic rates: auto | series | quadrature
+  double rtol = 1e-11;             // CVODE relative tolerance
+  bool tracer = false;             // binary tracer limit (species 2 = intruder)
+  std::optional<Sweep> sweep;      // settled quantities along a parameter
+};
+
+struct Scene {
+  std::string file;    // path as given
+  std::string text;    // file content (hashed for provenance)
+  std::string name, source, title;
+  Mixture mixture{{Species{}}};
+  Restitution restitution = Restitution::constant(1, 1.0);
+  bool enskog = false;
+  InitialState initial;
+  std::vector<double> times;
+  Observables observables;
+  TheorySettings theory;
+};
+
+// Throws InputError("file:line: key: what is wrong (allowed: …)").
+Scene load_scene(const std::string& path);
+
+}  // namespace granmix::model

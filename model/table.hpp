@@ -1,0 +1,16 @@
+#pragma once
+// Curves as the files hold them (design.md §4): long form, one row per (t or x, species),
+// named columns; NaN where a column does not apply to a row (gnuplot skips it).
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace granmix::model {
+
+struct Table {
+  std::vector<std::string> columns;
+  std::vector<std::vector<double>> rows;
+  static constexpr double missing = std::numeric_limits<double>::quiet_NaN();
+};
+
+}  // namespace granmix::model

@@ -1,0 +1,142 @@
+#include "toml_fields.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "errors.hpp"
+
+namespace granmix::model {
+
+std::string format_number(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+namespace {
+std::string type_name(const toml::node& n) {
+  if (n.is_string()) return "a string";
+  if (n.is_boolean()) return "a boolean";
+  if (n.is_array()) return "an array";
+  if (n.is_table()) return "a table";
+  return "a date or time";
+}
+}  // namespace
+
+TomlFields::TomlFields(const toml::table& table, std::string file, std::string path)
+    : table_(table), file_(std::move(file)), path_(std::move(path)) {}
+
+void TomlFields::fail_at(const toml::node& at, const std::string& key, const std::string& what,
+                         const std::string& allowed) const {
+  const auto line = at.source().begin.line;
+  std::string msg = file_ + ":" + std::to_string(line) + ": " + key_path(key) + ": " + what;
+  if (!allowed.empty()) msg += " (allowed: " + allowed + ")";
+  throw InputError(msg);
+}
+
+void TomlFields::fail(const std::string& key, const std::string& what, const std::string& allowed) const {
+  const toml::node* n = table_.get(key);
+  fail_at(n ? *n : static_cast<const toml::node&>(table_), key, what, allowed);
+}
+
+const toml::node* TomlFields::node(const std::string& key) {
+  used_.insert(key);
+  return table_.get(key);
+}
+
+double TomlFields::number(const std::string& key, double lo, double hi, std::optional<double> fallback) {
+  const std::string range = "a number in [" + format_number(lo) + ", " + format_number(hi) + "]";
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (fallback) return *fallback;
+    fail(key, "missing", range);
+  }
+  if (!n->is_number()) fail(key, "expected a number, found " + type_name(*n), range);
+  const double v = n->value<double>().value();
+  if (!std::isfinite(v) || v < lo || v > hi) fail(key, "value " + format_number(v) + " out of range", range);
+  return v;
+}
+
+double TomlFields::positive(const std::string& key, std::optional<double> fallback) {
+  const double v = number(key, 0.0, 1e300, fallback);
+  if (!(v > 0.0)) fail(key, "value " + format_number(v) + " must be positive", "a number > 0");
+  return v;
+}
+
+std::size_t TomlFields::count(const std::string& key, std::size_t lo, std::size_t hi, std::optional<std::size_t> fallback) {
+  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (fallback) return *fallback;
+    fail(key, "missing", range);
+  }
+  if (!n->is_integer()) fail(key, "expected an integer", range);
+  const auto v = n->value<std::int64_t>().value();
+  if (v < static_cast<std::int64_t>(lo) || v > static_cast<std::int64_t>(hi))
+    fail(key, "value " + std::to_string(v) + " out of range", range);
+  return static_cast<std::size_t>(v);
+}
+
+bool TomlFields::flag(const std::string& key, bool fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) return fallback;
+  if (!n->is_boolean()) fail(key, "expected true or false", "true, false");
+  return n->value<bool>().value();
+}
+
+std::string TomlFields::text(const std::string& key, std::optional<std::string> fallback) {
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (fallback) return *fallback;
+    fail(key, "missing", "a string");
+  }
+  if (!n->is_string()) fail(key, "expected a string", "a string");
+  return n->value<std::string>().value();
+}
+
+std::string TomlFields::choice(const std::string& key, const std::vector<std::string>& allowed,
+                               std::optional<std::string> fallback) {
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+  const toml::node* n = node(key);
+  if (n == nullptr) {
+    if (fallback) return *fallback;
+    fail(key, "missing", list);
+  }
+  if (!n->is_string()) fail(key, "expected a string", list);
+  const std::string v = n->value<std::string>().value();
+  for (const auto& a : allowed)
+    if (a == v) return v;
+  fail(key, "unknown value \"" + v + "\"", list);
+}
+
+std::vector<double> TomlFields::numbers(const std::string& key, double lo, double hi) {
+  const std::string range = "a non-empty array of numbers in [" + format_number(lo) + ", " + format_number(hi) + "]";
+  const toml::node* n = node(key);
+  if (n == nullptr) fail(key, "missing", range);
+  const toml::array* a = n->as_array();
+  if (a == nullptr || a->empty()) fail(key, "expected a non-empty array", range);
+  std::vector<double> out;
+  for (const toml::node& e : *a) {
+    if (!e.is_number()) fail_at(e, key, "array element is not a number", range);
+    const double v = e.value<double>().value();
+    if (!std::isfinite(v) || v < lo || v > hi) fail_at(e, key, "element " + format_number(v) + " out of range", range);
+    out.push_back(v);
+  }
+  return out;
+}
+
+TomlFields TomlFields::sub(const std::string& key) {
+  const toml::node* n = node(key);
+  if (n == nullptr || !n->is_table()) fail(key, n ? "expected a table" : "missing", "a table { … }");
+  return TomlFields(*n->as_table(), file_, key_path(key));
+}
+
+void TomlFields::finish() const {
+  std::string allowed;
+  for (const auto& a : used_) allowed += (allowed.empty() ? "" : ", ") + a;
+  for (const auto& [k, v] : table_)
+    if (!used_.count(std::string(k.str()))) fail_at(v, std::string(k.str()), "unknown key", allowed);
+}
+
+}  // namespace granmix::model

@@ -1,0 +1,152 @@
+#include "scene_theory.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "diffusion.hpp"
+#include "initial_state.hpp"
+#include "model/enskog.hpp"
+#include "msd.hpp"
+#include "tamsd.hpp"
+#include "tracer_limit.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+using model::Table;
+constexpr double nan = Table::missing;
+
+MomentMethod moment_method(const std::string& name) {
+  return name == "series" ? MomentMethod::series : name == "quadrature" ? MomentMethod::quadrature : MomentMethod::automatic;
+}
+
+Table sweep_table(const model::Scene& s) {
+  const model::Sweep& sw = *s.theory.sweep;
+  Table t;
+  t.columns = {sw.parameter == model::Sweep::Parameter::eps ? "eps" : "density", "species", "D_ratio"};
+  for (double x : sw.values) {
+    const bool eps = sw.parameter == model::Sweep::Parameter::eps;
+    const model::Mixture mix = eps ? s.mixture : s.mixture.with_density(sw.species, x);
+    const model::Restitution law = eps ? model::Restitution::constant(mix.size(), x) : s.restitution;
+    const SettledDiffusion d = settled_diffusion(scene_rates(s, mix, law));
+    for (std::size_t k = 0; k < mix.size(); ++k) t.rows.push_back({x, static_cast<double>(k + 1), d.D_ratio[k]});
+  }
+  return t;
+}
+
+// Per-time values of every species, however they were computed.
+struct Sample {
+  double t_s = nan;
+  std::vector<double> T, msd, D_ratio, tamsd;
+};
+
+Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
+  const auto& o = s.observables;
+  const std::size_t N = s.mixture.size();
+  Table t;
+  t.columns = {"t", "species"};
+  if (o.rescaled_time) t.columns.push_back("t_s");
+  if (o.temperatures) t.columns.push_back("T");
+  if (o.msd) t.columns.push_back("msd");
+  if (o.d_ratio) t.columns.push_back("D_ratio");
+  if (o.gamma) t.columns.push_back("gamma");
+  if (o.tamsd) t.columns.push_back("lag"), t.columns.push_back("tamsd");
+  const bool total_row = N > 1 && (o.temperatures || o.msd || o.gamma);
+  for (std::size_t j = 0; j < s.times.size(); ++j) {
+    const Sample& x = samples[j];
+    for (std::size_t k = total_row ? 0 : 1; k <= N; ++k) {
+      std::vector<double> row = {s.times[j], static_cast<double>(k)};
+      const bool all = k == 0;  // species 0: ⟨T⟩ and the total MSD (v1 Eq. 16)
+      if (o.rescaled_time) row.push_back(x.t_s);
+      if (o.temperatures) row.push_back(all ? s.mixture.mean_temperature(x.T) : x.T[k - 1]);
+      if (o.msd) row.push_back(all ? msd_total(s.mixture, x.msd) : x.msd[k - 1]);
+      if (o.d_ratio) row.push_back(all ? nan : x.D_ratio[k - 1]);
+      if (o.gamma) row.push_back(all ? x.T[0] / x.T[1] : nan);
+      if (o.tamsd) row.push_back(s.times[j]), row.push_back(all ? nan : x.tamsd[k - 1]);
+      t.rows.push_back(std::move(row));
+    }
+  }
+  return t;
+}
+
+// Tracer limit: every curve in closed form (gas: Haff; intruder: θ times Haff).
+std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& rates) {
+  const TracerLimit tl = tracer_limit(rates);
+  const double D[2] = {tl.D_gas, tl.D_intruder}, tv[2] = {tl.tau_v_gas, tl.tau_v_intruder};
+  std::vector<Sample> out;
+  for (double t : s.times) {
+    Sample x;
+    const double haff = std::isfinite(tl.tau0) ? 1.0 / std::pow(1.0 + t / tl.tau0, 2) : 1.0;
+    x.T = {haff, tl.theta * haff};
+    x.t_s = std::isfinite(tl.tau0) ? tl.tau0 * std::log1p(t / tl.tau0) : t;
+    for (int k = 0; k < 2; ++k) {
+      x.msd.push_back(msd_closed(D[k], tv[k], tl.tau0, t));
+      x.D_ratio.push_back(D[k] / D[0]);
+      if (s.observables.tamsd) x.tamsd.push_back(tamsd(D[k], tv[k], tl.tau0, s.observables.tamsd_measurement_time, t));
+    }
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, SolverStats& stats) {
+  const auto& o = s.observables;
+  const MsdMethod method = parse_msd_method(s.theory.msd);
+  const std::vector<double> T0 = initial_temperatures(s.initial, rates);
+  TemperatureOptions opt;
+  opt.rtol = s.theory.rtol;
+  opt.reduced_time = o.rescaled_time || (o.msd && method == MsdMethod::eq17);
+  opt.diffusion_integral = o.msd && method == MsdMethod::longtime;
+  opt.vacf = o.msd && method == MsdMethod::vacf;
+  const TemperatureHistory h(rates, T0, s.times.back(), opt);
+  stats = h.stats();
+  const bool settled = o.tamsd || (o.msd && method == MsdMethod::closed);
+  const SettledDiffusion d0 = settled ? diffusion_at(rates, T0) : SettledDiffusion{};
+  const std::size_t N = rates.size();
+  std::vector<Sample> out;
+  for (double t : s.times) {
+    Sample x;
+    x.T.resize(N);
+    h.temperatures(t, x.T.data());
+    if (o.rescaled_time) x.t_s = h.reduced_time(t, 0);
+    for (std::size_t k = 0; k < N; ++k) {
+      if (o.msd) {
+        switch (method) {
+          case MsdMethod::eq17: x.msd.push_back(msd_eq17(h, k, t)); break;
+          case MsdMethod::vacf: x.msd.push_back(h.msd_vacf(t, k)); break;
+          case MsdMethod::longtime: x.msd.push_back(6.0 * h.diffusion_integral(t, k)); break;
+          case MsdMethod::closed: x.msd.push_back(msd_closed(d0.D[k], d0.tau_v[k], d0.tau0, t)); break;
+        }
+      }
+      if (o.tamsd) x.tamsd.push_back(tamsd(d0.D[k], d0.tau_v[k], d0.tau0, o.tamsd_measurement_time, t));
+    }
+    if (o.d_ratio)  // D_k(t)/D_1(t), v1 Eq. (19)
+      for (std::size_t k = 0; k < N; ++k) x.D_ratio.push_back(rates.diffusion(k, x.T.data()) / rates.diffusion(0, x.T.data()));
+    out.push_back(std::move(x));
+  }
+  return out;
+}
+
+}  // namespace
+
+CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, const model::Restitution& law) {
+  auto chi = s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
+  return CollisionRates(mix, law, std::move(chi), moment_method(s.theory.moments));
+}
+
+TheoryResult run_theory(const model::Scene& s) {
+  const auto start = std::chrono::steady_clock::now();
+  TheoryResult r;
+  if (s.theory.sweep) {
+    r.table = sweep_table(s);
+  } else {
+    const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
+    const std::vector<Sample> samples = s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, r.stats);
+    r.table = time_table(s, samples);
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace granmix::theory

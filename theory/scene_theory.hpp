@@ -1,0 +1,22 @@
+#pragma once
+// The theory curves a scene asks for, and nothing else (design.md §1: "model only what a scene
+// needs"): temperatures, MSD, t_s, D_k/D_1, γ, TAMSD along the time grid, or settled D_k/D_1
+// along a parameter sweep.
+#include "model/scene.hpp"
+#include "model/table.hpp"
+#include "temperature_history.hpp"
+
+namespace granmix::theory {
+
+struct TheoryResult {
+  model::Table table;
+  SolverStats stats;     // of the temperature integration (zero when none was needed)
+  double seconds = 0.0;  // wall time of the whole theory evaluation
+};
+
+TheoryResult run_theory(const model::Scene& scene);
+
+// The rates of a scene's mixture and law, with χ from Enskog or 1.
+CollisionRates scene_rates(const model::Scene& scene, const model::Mixture& mix, const model::Restitution& law);
+
+}  // namespace granmix::theory
