@@ -19,35 +19,39 @@ CollisionMoments series_moments(double a) {
   auto h = [](std::size_t n) { return (n >= 1 && n <= H) ? model::viscoelastic_h[n - 1] : 0.0; };
   CollisionMoments m;
   double an = 1.0;
+  // ε = 1 + δ, δ = Σ h_n y^n: (1+ε)² = 4 + 4δ + δ², 1 − ε² = −2δ − δ²; ⟨y^n⟩ = 2 B_n.
   for (std::size_t n = 1; n <= 2 * H; ++n) {
     an *= a;
-    const double twoB = an * std::tgamma(2.0 + n / 20.0);  // ⟨y^n⟩ = 2 B_n
-    double An = 4.0 * h(n);                                  // A_n = 4h_n + Σ_{j+l=n} h_j h_l
-    for (std::size_t j = 1; j < n; ++j) An += h(j) * h(n - j);
-    m.W1 += h(n) * twoB;
-    m.W2 += An * twoB;
+    const double twoB = an * std::tgamma(2.0 + n / 20.0);
+    double c = 0.0;  // Σ_{j+l=n} h_j h_l
+    for (std::size_t j = 1; j < n; ++j) c += h(j) * h(n - j);
+    m.W2 += (4.0 * h(n) + c) * twoB;  // A_n = 4h_n + Σ h_j h_l (v1 App. A)
+    m.D -= (2.0 * h(n) + c) * twoB;
   }
   return m;
 }
 
 namespace {
 
+enum class Moment { W2, D };
+
 struct QuadParams {
   double a;
   model::ViscoelasticForm form;
-  int power;
+  Moment what;
 };
 
 // With u = √(2V) w^10 the weight u³e^(-u²/2V) du becomes ∝ 10 w^39 exp(-w^20) dw and
 // y = a w: a smooth integrand on a finite range (exp(-w^20) < 1e-40 beyond w = 1.3).
 double integrand(double w, void* p) {
   const auto* q = static_cast<const QuadParams*>(p);
-  const double one_plus_eps = 1.0 + model::restitution(q->form, q->a * w);
+  const double eps = model::restitution(q->form, q->a * w);
   const double w20 = std::pow(w, 20);
-  return 20.0 * std::pow(w, 39) * std::exp(-w20) * (q->power == 1 ? one_plus_eps : one_plus_eps * one_plus_eps);
+  const double f = q->what == Moment::W2 ? (1.0 + eps) * (1.0 + eps) : (1.0 - eps) * (1.0 + eps);
+  return 20.0 * std::pow(w, 39) * std::exp(-w20) * f;
 }
 
-double moment(double a, model::ViscoelasticForm form, int power) {
+double moment(double a, model::ViscoelasticForm form, Moment what) {
   model::use_gsl_return_codes();
   // One workspace per thread: replicas and sweeps may evaluate rates concurrently.
   struct Workspace {
@@ -56,7 +60,7 @@ double moment(double a, model::ViscoelasticForm form, int power) {
   };
   thread_local Workspace ws;
   if (ws.w == nullptr) throw NumericalError("gsl_integration_workspace_alloc failed");
-  QuadParams q{a, form, power};
+  QuadParams q{a, form, what};
   gsl_function f{integrand, &q};
   double result = 0.0, abserr = 0.0;
   // 1e-12 relative: the rates built on these moments are compared with the series at 1e-8.
@@ -69,7 +73,7 @@ double moment(double a, model::ViscoelasticForm form, int power) {
 }  // namespace
 
 CollisionMoments quadrature_moments(double a, model::ViscoelasticForm form) {
-  return {moment(a, form, 1), moment(a, form, 2)};
+  return {moment(a, form, Moment::W2), moment(a, form, Moment::D)};
 }
 
 }  // namespace granmix::theory

@@ -20,8 +20,8 @@ CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::
   for (std::size_t k = 0; k < N; ++k)
     for (std::size_t i = 0; i < N; ++i) {
       const double s = mix_.sigma(k, i);
-      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mix_[i].mass / (mix_[i].mass + mix_[k].mass),
-                           1.0 / mix_[k].mass, 1.0 / mix_[i].mass};
+      const double mk = mix_[k].mass, mi = mix_[i].mass;
+      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mi / (mi + mk), mk / (mi + mk), 1.0 / mk, 1.0 / mi};
     }
 }
 
@@ -31,27 +31,20 @@ CollisionMoments CollisionRates::moments(std::size_t k, std::size_t i, double V)
   return method_ == MomentMethod::series ? series_moments(a) : quadrature_moments(a, law_.form());
 }
 
-void CollisionRates::pair_terms(std::size_t k, std::size_t i, double Tk, double Ti, double& sqrtV_mu, double& X,
-                                CollisionMoments& W) const {
+CollisionRates::Terms CollisionRates::pair_terms(std::size_t k, std::size_t i, double Tk, double Ti) const {
   const Pair& p = pair(k, i);
   const double V = Tk * p.inv_mk + Ti * p.inv_mi;
-  sqrtV_mu = std::sqrt(V) * p.mu;
-  X = p.mu * V / (Tk * p.inv_mk);  // (T_k m_i + T_i m_k) / (T_k (m_i + m_k))
-  W = moments(k, i, V);
+  return {std::sqrt(V) * p.mu, p.mu_k * (Ti - Tk) / Tk, moments(k, i, V)};
 }
 
 double CollisionRates::xi(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  double sqrtV_mu, X;
-  CollisionMoments W;
-  pair_terms(k, i, Tk, Ti, sqrtV_mu, X, W);
-  return pair(k, i).prefactor * sqrtV_mu * (2.0 * W.W1 - X * W.W2);
+  const Terms t = pair_terms(k, i, Tk, Ti);
+  return pair(k, i).prefactor * t.sqrtV_mu * (t.W.D - t.X_minus_1 * t.W.W2);
 }
 
 double CollisionRates::inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  double sqrtV_mu, X;
-  CollisionMoments W;
-  pair_terms(k, i, Tk, Ti, sqrtV_mu, X, W);
-  return pair(k, i).prefactor * sqrtV_mu * X * W.W2 * 0.5;
+  const Terms t = pair_terms(k, i, Tk, Ti);
+  return pair(k, i).prefactor * t.sqrtV_mu * (1.0 + t.X_minus_1) * t.W.W2 * 0.5;
 }
 
 double CollisionRates::xi_species(std::size_t k, const double* T) const {

@@ -1,9 +1,11 @@
 #pragma once
 // Partial cooling rates ξ_ki and inverse velocity correlation times τ_v,ki⁻¹ of a mixture
-// (v1 Appendix A), with the Enskog factor χ_ki. For a pair with moments W1, W2
+// (v1 Appendix A), with the Enskog factor χ_ki. For a pair with moments W2, D
 // (collision_moments.hpp), V = T_k/m_k + T_i/m_i, μ = m_i/(m_i+m_k), X = μ V m_k / T_k:
-//   ξ_ki       = (4/3)√(2π) n_i σ_ki² χ_ki √V μ (2 W1 − X W2)   = v1 (A2) / (A4)
-//   τ_v,ki⁻¹   = (4/3)√(2π) n_i σ_ki² χ_ki √V μ X W2 / 2        = v1 (A1) / (A3)
+//   ξ_ki       = (4/3)√(2π) n_i σ_ki² χ_ki √V μ (D − (X−1) W2)   = v1 (A2) / (A4)
+//   τ_v,ki⁻¹   = (4/3)√(2π) n_i σ_ki² χ_ki √V μ X W2 / 2         = v1 (A1) / (A3)
+// with X − 1 = m_k (T_i − T_k) / (T_k (m_i+m_k)) written out, so that ξ has no cancellation at
+// ε = 1 and T_i = T_k (it is then exactly 0; CVODE needs that at t ~ 1e12).
 // (derivation: the energy and momentum change of particle k averaged over the Maxwellian pair
 // measure; ⟨v_k·e | g⟩ = (m_i T_k/(m_k T_i + m_i T_k)) g·e).
 #include <cstddef>
@@ -46,12 +48,16 @@ class CollisionRates {
   struct Pair {
     double prefactor;  // (4/3)√(2π) n_i σ_ki² χ_ki
     double mu;         // m_i / (m_i + m_k)
+    double mu_k;       // m_k / (m_i + m_k)
     double inv_mk, inv_mi;
   };
   const Pair& pair(std::size_t k, std::size_t i) const { return pairs_[k * mix_.size() + i]; }
-  // Shared by ξ and τ: returns √V μ and X, and the moments.
-  void pair_terms(std::size_t k, std::size_t i, double Tk, double Ti, double& sqrtV_mu, double& X,
-                  CollisionMoments& W) const;
+  // Shared by ξ and τ: √V μ, X − 1 and the moments.
+  struct Terms {
+    double sqrtV_mu, X_minus_1;
+    CollisionMoments W;
+  };
+  Terms pair_terms(std::size_t k, std::size_t i, double Tk, double Ti) const;
 
   model::Mixture mix_;
   model::Restitution law_;

@@ -36,13 +36,19 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   work_a_.resize(N_);
   work_xi_.resize(N_);
 
-  // Time unit: the fastest of cooling and velocity relaxation at t = 0 (ξ = 0 for ε = 1).
+  // Clock (see the header): Haff time of the mean cooling rate, or the fastest relaxation time.
   std::vector<double> xi(N_), itau(N_);
   rates_.xi_all(T0_.data(), xi.data());
   rates_.inv_tau_v_all(T0_.data(), itau.data());
-  double fastest = 0.0;
-  for (std::size_t k = 0; k < N_; ++k) fastest = std::max({fastest, std::abs(xi[k]), itau[k]});
-  t_c_ = 1.0 / fastest;
+  double fastest = 0.0, loss = 0.0, energy = 0.0;
+  for (std::size_t k = 0; k < N_; ++k) {
+    fastest = std::max({fastest, std::abs(xi[k]), itau[k]});
+    const double w = rates_.mixture()[k].density * T0_[k];
+    loss += w * xi[k], energy += w;
+  }
+  const double xi_mean = loss / energy;
+  log_clock_ = xi_mean > 1e-12 * fastest;  // below: energy is conserved to rounding (ε = 1)
+  t_c_ = log_clock_ ? 2.0 / xi_mean : 1.0 / fastest;
 
   const auto t0 = std::chrono::steady_clock::now();
   const bool gmres = opt_.solver == TemperatureOptions::Solver::gmres ||
@@ -64,7 +70,7 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   try {
     while (s < s_end) {
       model::check_cvode(CVode(cv.mem(), s_end, cv.y(), &s, CV_ONE_STEP), "CVode",
-                         "temperature ODE at t = " + std::to_string(t_c_ * std::expm1(s)));
+                         "temperature ODE at t = " + std::to_string(to_t(s)));
       int q = 0;
       double h = 0.0;
       model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
@@ -97,14 +103,12 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   stats_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double TemperatureHistory::to_s(double t) const { return std::log1p(t / t_c_); }
-
 int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr) {
   auto& self = *static_cast<TemperatureHistory*>(self_ptr);
   const double* y = N_VGetArrayPointer(yv);
   double* dy = N_VGetArrayPointer(dyv);
   const std::size_t N = self.N_;
-  const double dt_ds = self.t_c_ * std::exp(s);  // t_c + t
+  const double dt_ds = self.dt_ds(s);
   double* T = self.work_T_.data();
   for (std::size_t k = 0; k < N; ++k) T[k] = std::exp(y[k]);
   for (std::size_t k = 0; k < N; ++k)

@@ -1,7 +1,10 @@
 #pragma once
 // Partial temperatures of an N-species mixture, dT_k/dt = −ξ_k T_k (v1 Eqs. 22–23), integrated
-// with CVODE (BDF) in the unknowns ln T_k and the time variable s = ln(1 + t/t_c), so that
-// Haff-like decay T ∝ t^(-2) is linear in s and t = 1e12 takes a few hundred steps.
+// with CVODE (BDF) in the unknowns ln T_k and a time variable that follows the collision clock:
+//   cooling gas (mean cooling rate ξ̄ = Σ n_k T_k ξ_k / Σ n_k T_k > 0):  s = ln(1 + t/t_c), t_c = 2/ξ̄(0),
+//     so Haff-like decay T ∝ t^(-2) is linear in s and t = 1e12 takes a few hundred steps;
+//   no net cooling (ε = 1):  s = t/t_c with t_c the fastest relaxation time; a log clock would make
+//     the equipartition mode ever stiffer (rate ν (t_c + t) in s) until rounding noise wins.
 // Optional companions integrated with the same solver (only when asked for):
 //   reduced time       τ_k(t) = ∫₀ᵗ √(T_k/T_k(0)) dt'          (v1 Eq. 17, Fig. 1 t_s)
 //   diffusion integral I_k(t) = ∫₀ᵗ D_k dt'                     (v1 Eq. 21, long-time MSD = 6 I_k)
@@ -48,10 +51,10 @@ class TemperatureHistory {
   double diffusion_integral(double t, std::size_t k) const;
   double msd_vacf(double t, std::size_t k) const;
 
-  // s = ln(1 + t/t_c), dt/ds = t_c + t.
-  double to_s(double t) const;
-  double to_t(double s) const { return t_c_ * std::expm1(s); }
-  double dt_ds(double s) const { return t_c_ * std::exp(s); }
+  // The solver's time variable (see above) and its derivative.
+  double to_s(double t) const { return log_clock_ ? std::log1p(t / t_c_) : t / t_c_; }
+  double to_t(double s) const { return log_clock_ ? t_c_ * std::expm1(s) : t_c_ * s; }
+  double dt_ds(double s) const { return log_clock_ ? t_c_ * std::exp(s) : t_c_; }
 
  private:
   struct Step {
@@ -65,6 +68,7 @@ class TemperatureHistory {
   const CollisionRates& rates_;
   std::vector<double> T0_;
   double t_end_, t_c_;
+  bool log_clock_ = true;
   TemperatureOptions opt_;
   std::size_t N_, n_;
   std::size_t tau_at_ = 0, int_at_ = 0, r2_at_ = 0, j_at_ = 0;

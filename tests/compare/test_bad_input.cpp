@@ -1,0 +1,94 @@
+// Every kind of bad scene input, through the command line: one message naming file, line and key,
+// exit code 2, and no output written (design.md §4).
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "run_cli.hpp"
+
+using namespace granmix;
+
+namespace {
+
+const std::string good = R"([scene]
+name = "bad"
+[mixture]
+species = [{ mass = 1, diameter = 1, density = 0.1 }, { mass = 100, diameter = 4.64, density = 0.1 }]
+[collisions]
+restitution = 0.5
+[initial]
+temperatures = "equal"
+[time]
+end = 1e3
+points = 5
+[observables]
+msd = true
+[theory]
+msd = "eq17"
+)";
+
+std::string replace(std::string s, const std::string& from, const std::string& to) {
+  const auto at = s.find(from);
+  REQUIRE(at != std::string::npos);
+  return s.replace(at, from.size(), to);
+}
+
+struct Case {
+  const char* what;
+  std::string text;
+  const char* expect;  // "line: key" part of the message
+};
+
+}  // namespace
+
+TEST_CASE("the good scene runs (the bad ones below differ from it in one place)", "[compare]") {
+  const auto d = test::fresh_dir("good");
+  test::write_file(d / "s.toml", good);
+  const auto r = test::run_granmix("theory " + (d / "s.toml").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code == 0);
+  CHECK(std::filesystem::exists(d / "out" / "bad" / "theory.tsv"));
+}
+
+TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written", "[compare]") {
+  const std::vector<Case> cases = {
+      {"unknown key", replace(good, "points = 5", "points = 5\npoint = 3"), ":12: time.point: unknown key"},
+      {"unknown table", good + "[dsmcx]\nx = 1\n", ":16: dsmcx: unknown key"},
+      {"wrong type", replace(good, "restitution = 0.5", "restitution = \"half\""), ":6: collisions.restitution"},
+      {"out of range", replace(good, "restitution = 0.5", "restitution = 1.5"), ":6: collisions.restitution: value 1.5 out of range"},
+      {"negative mass", replace(good, "mass = 100", "mass = -100"), ":4: mixture.species[2].mass"},
+      {"missing mass", replace(good, "mass = 100, ", ""), ":4: mixture.species[2].mass: missing"},
+      {"missing table", replace(good, "[observables]\nmsd = true\n", ""), "observables: missing"},
+      {"bad choice", replace(good, "msd = \"eq17\"", "msd = \"eq18\""), ":15: theory.msd: unknown value \"eq18\""},
+      {"bad initial", replace(good, "\"equal\"", "\"warm\""), ":8: initial.temperatures: unknown value"},
+      {"wrong list length", replace(good, "\"equal\"", "[1.0]"), ":8: initial.temperatures: list has 1 values for 2 species"},
+      {"matrix not symmetric", replace(good, "restitution = 0.5", "restitution = [[0.5, 0.6], [0.7, 0.5]]"),
+       ":6: collisions.restitution: matrix is not symmetric"},
+      {"bad name", replace(good, "name = \"bad\"", "name = \"a/b\""), ":2: scene.name: not usable as a folder name"},
+      {"end time out of range", replace(good, "end = 1e3", "end = -1"), ":10: time.end: value -1 out of range"},
+      {"float where integer", replace(good, "points = 5", "points = 5.5"), ":11: time.points: expected an integer"},
+      {"no observable", replace(good, "msd = true", "msd = false"), "observables"},
+      {"closed form needs settled start", replace(good, "msd = \"eq17\"", "msd = \"closed\""), "theory: msd = \"closed\" holds for a settled start only"},
+      {"toml syntax", replace(good, "points = 5", "points = = 5"), ":11:"},
+      {"viscoelastic out of range", replace(good, "restitution = 0.5", "restitution = { viscoelastic = 50 }"),
+       ":6: collisions.restitution.viscoelastic: value 50 out of range"},
+      {"both mixture forms", replace(good, "[collisions]", "power_law = { n1 = 0.1, theta = 3, n1_particles = 10 }\n[collisions]"),
+       "mixture.species: give exactly one of"},
+  };
+  for (const Case& c : cases) {
+    const auto d = test::fresh_dir("bad");
+    test::write_file(d / "scene.toml", c.text);
+    const auto r = test::run_granmix("theory " + (d / "scene.toml").string() + " --out " + (d / "out").string());
+    INFO(c.what << ":\n" << r.output);
+    CHECK(r.code == 2);
+    CHECK(r.output.find((d / "scene.toml").string()) != std::string::npos);  // names the file
+    CHECK(r.output.find(c.expect) != std::string::npos);
+    CHECK(std::count(r.output.begin(), r.output.end(), '\n') == 1);  // one line
+    CHECK(!std::filesystem::exists(d / "out"));                      // nothing written
+  }
+}
+
+TEST_CASE("missing scene file and unknown options exit 2", "[compare]") {
+  CHECK(test::run_granmix("theory /nonexistent/scene.toml").code == 2);
+  CHECK(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --bogus").code == 2);
+  CHECK(test::run_granmix("frobnicate").code == 2);
+}

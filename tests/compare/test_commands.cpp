@@ -1,0 +1,124 @@
+// The command line as users run it: granmix theory on the shipped scenes, granmix hcs in both
+// forms and with --json, checked against values computed in-process and against closed forms.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "model/enskog.hpp"
+#include "model/mixture_generators.hpp"
+#include "run_cli.hpp"
+#include "theory/diffusion.hpp"
+
+using namespace granmix;
+
+namespace {
+
+struct Tsv {
+  std::vector<std::string> comments, columns;
+  std::vector<std::vector<double>> rows;
+  double at(std::size_t row, const std::string& col) const {
+    for (std::size_t c = 0; c < columns.size(); ++c)
+      if (columns[c] == col) return rows.at(row)[c];
+    throw std::runtime_error("no column " + col);
+  }
+};
+
+Tsv read_tsv(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  Tsv t;
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("#", 0) == 0) {
+      t.comments.push_back(line);
+    } else if (t.columns.empty()) {
+      std::istringstream s(line);
+      for (std::string c; std::getline(s, c, '\t');) t.columns.push_back(c);
+    } else {
+      std::istringstream s(line);
+      std::vector<double> row;
+      for (std::string c; std::getline(s, c, '\t');) row.push_back(std::stod(c));
+      t.rows.push_back(row);
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln t growth", "[compare]") {
+  const auto d = test::fresh_dir("fig02");
+  const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const Tsv t = read_tsv(d / "bo1-fig02" / "theory.tsv");
+  REQUIRE(t.comments.size() == 6);
+  CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
+  CHECK(t.comments[1].find("sha256: ") != std::string::npos);
+  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd"});
+  REQUIRE(t.rows.size() == 41 * 3);
+  // First time t = 0.01, species 2 (row 2): close to ballistic 3 T t²/m (correction O(t/τ_v) ~ 1e-2).
+  CHECK(t.at(2, "msd") == Approx(3 * 1e-4 / 100).epsilon(0.02));
+  // Species 0 row: total MSD is the density-weighted mean (v1 Eq. 16), equal densities here.
+  const std::size_t last = t.rows.size() - 3;
+  CHECK(t.at(last, "msd") == Approx(0.5 * (t.at(last + 1, "msd") + t.at(last + 2, "msd"))).epsilon(1e-14));
+}
+
+TEST_CASE("granmix theory bo1-fig05: settled D2/D1 along eps matches the in-process solver", "[compare]") {
+  const auto d = test::fresh_dir("fig05");
+  const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig05.toml") + " --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const Tsv t = read_tsv(d / "bo1-fig05" / "theory.tsv");
+  CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio"});
+  REQUIRE(t.rows.size() == 102);
+  const model::Mixture mix({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}});
+  for (std::size_t row = 1; row < t.rows.size(); row += 10) {
+    const double e = t.at(row, "eps");
+    const theory::CollisionRates rates(mix, model::Restitution::constant(2, e), model::dilute_contact_values(2));
+    // Same solver, different process: the file carries every digit (round-trip printing).
+    CHECK(t.at(row, "D_ratio") == Approx(theory::settled_diffusion(rates).D_ratio[1]).epsilon(1e-12));
+  }
+  // v1 text: D2/D1 increases as eps decreases.
+  CHECK(t.at(1, "D_ratio") > t.at(101, "D_ratio"));
+}
+
+TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compare]") {
+  const auto r = test::run_granmix("hcs --mass 1,100 --diameter 1,4.6416 --density 0.1,0.1 --eps 0.5 --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  REQUIRE(j["species"].size() == 2);
+  CHECK(j["species"][0]["T_ratio_maxwell"].get<double>() == 1.0);
+  const model::Mixture mix({{1, 1, 0.1}, {100, 4.6416, 0.1}});
+  const theory::CollisionRates rates(mix, model::Restitution::constant(2, 0.5), model::dilute_contact_values(2));
+  const auto d = theory::settled_diffusion(rates);
+  CHECK(j["species"][1]["T_ratio_maxwell"].get<double>() == Approx(d.T[1] / d.T[0]).epsilon(1e-14));
+  CHECK(j["species"][1]["D_ratio"].get<double>() == Approx(d.D_ratio[1]).epsilon(1e-14));
+  CHECK(j["tau0"].get<double>() == Approx(d.tau0).epsilon(1e-14));
+  CHECK(!j["species"][0].contains("T_ratio_sonine"));  // not computable yet: omitted, never faked
+}
+
+TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "[compare]") {
+  const auto r = test::run_granmix("hcs --mu 10 --delta 2 --w 1 --alpha 0.5 --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  const double gamma = 1.0 / j["species"][1]["T_ratio_maxwell"].get<double>();  // γ = T1/T2
+  CHECK(gamma == Approx(3.8).margin(0.05));  // MG Fig. 1: γ ≃ 3.8 (two published digits)
+  CHECK(!j.contains("tau0"));  // dilute MG form has no absolute density
+  const auto text = test::run_granmix("hcs --mu 10 --delta 2 --w 1 --alpha 0.5");
+  CHECK(text.code == 0);
+  CHECK(text.output.find("T_ratio_maxwell") != std::string::npos);
+}
+
+TEST_CASE("granmix hcs: bad usage exits 2 with a message", "[compare]") {
+  for (const char* args : {"hcs --mass 1,100 --diameter 1 --density 0.1,0.1 --eps 0.5", "hcs --mu 10 --delta 2 --w 1 --alpha 1.5",
+                           "hcs --mass 1 --diameter 1 --density 0.1 --eps 0.5 --mu 2", "hcs --mass 1,x", "hcs --eps 0.5", ""}) {
+    const auto r = test::run_granmix(args);
+    INFO(args << " -> " << r.output);
+    CHECK(r.code == 2);
+    CHECK(!r.output.empty());
+  }
+}
