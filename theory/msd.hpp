@@ -1,8 +1,8 @@
 #pragma once
 // Mean-squared displacement of species k (physics.md §3):
 //   eq17      v1 Eq. (17): 6∫₀ᵗ D_k(t₁)[1 − exp(−(τ_k(t)−τ_k(t₁))/τ̂_v,k(t₁))] dt₁, by adaptive
-//             Gauss–Kronrod quadrature (GSL QAG, 21 points) in s₁ = ln(1+t₁/t_c) on the dense
-//             CVODE solution; relative error 1e-9 requested (1e-6 required).
+//             Gauss–Kronrod quadrature (GSL QAG, 21 points) in the solver's clock s₁ on the dense
+//             CVODE solution; relative error max(1e-9, 10 rtol) requested (1e-6 required).
 //   longtime  v1 Eq. (21): 6∫₀ᵗ D_k dt₁ (integrated with the temperatures).
 //   vacf      the velocity-autocorrelation ODE (integrated with the temperatures).
 //   closed    settled ratios (v2 Eq. 22, rebuilt): 6D_k(0){τ₀ ln(1+t/τ₀) − τ_v,k(0)[1 − (1+t/τ₀)^(−τ₀/τ_v,k(0))]}

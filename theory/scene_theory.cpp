@@ -96,6 +96,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   const std::vector<double> T0 = initial_temperatures(s.initial, rates);
   TemperatureOptions opt;
   opt.rtol = s.theory.rtol;
+  opt.t_first = s.times.front();
   opt.reduced_time = o.rescaled_time || (o.msd && method == MsdMethod::eq17);
   opt.diffusion_integral = o.msd && method == MsdMethod::longtime;
   opt.vacf = o.msd && method == MsdMethod::vacf;

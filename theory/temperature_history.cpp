@@ -15,12 +15,6 @@
 
 namespace granmix::theory {
 
-namespace {
-// Absolute tolerance of the companions τ, I, ⟨R²⟩, J: they start at 0 and grow like t or t²,
-// so only their relative error matters; a tiny atol keeps CVODE from accepting garbage at t → 0.
-constexpr double companion_atol = 1e-60;
-}  // namespace
-
 TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<double> T0, double t_end,
                                        TemperatureOptions opt)
     : rates_(rates), T0_(std::move(T0)), t_end_(t_end), opt_(opt), N_(rates.size()) {
@@ -55,8 +49,20 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
                      (opt_.solver == TemperatureOptions::Solver::automatic && n_ > 64);
   model::CvodeSession cv(n_, rhs, this, gmres ? model::LinearSolver::gmres : model::LinearSolver::dense);
   double* y = cv.data();
-  std::vector<double> atol(n_, companion_atol);
-  for (std::size_t k = 0; k < N_; ++k) y[k] = std::log(T0_[k]), atol[k] = opt_.rtol;
+  // Absolute tolerances. ln T: rtol (an absolute error in ln T is a relative error in T). The
+  // companions start at 0 and grow like t or t²: their atol is rtol times their size at t_first,
+  // τ ~ t, I ~ D(0) t, ⟨R²⟩ ~ 3T t²/m, J ~ 3T t/m. Much smaller values (1e-60 was tried) make
+  // CVODE start with a step of 1e-37 and grow it tenfold per step for ~50 steps, where the BDF
+  // error estimate fails and ln T ends up 1e-4 off at rtol 1e-10.
+  const double t1 = opt_.t_first > 0.0 ? opt_.t_first : 1e-8 * t_c_;
+  std::vector<double> atol(n_);
+  for (std::size_t k = 0; k < N_; ++k) {
+    y[k] = std::log(T0_[k]), atol[k] = opt_.rtol;
+    const double v = 3.0 * T0_[k] / rates_.mixture()[k].mass;  // ⟨v_k²⟩(0)
+    if (opt_.reduced_time) atol[tau_at_ + k] = opt_.rtol * t1;
+    if (opt_.diffusion_integral) atol[int_at_ + k] = opt_.rtol * t1 * rates_.diffusion(k, T0_.data());
+    if (opt_.vacf) atol[r2_at_ + k] = opt_.rtol * v * t1 * t1, atol[j_at_ + k] = opt_.rtol * v * t1;
+  }
   y0_.assign(y, y + n_);
   cv.init(0.0, opt_.rtol, atol.data());
   const double s_end = to_s(t_end_);

@@ -28,6 +28,9 @@ struct TemperatureOptions {
   bool diffusion_integral = false;
   bool vacf = false;
   enum class Solver { automatic, dense, gmres } solver = Solver::automatic;  // automatic: dense up to 64 unknowns
+  // Earliest time at which the companions must be accurate (0: 1e-8 of the clock's time unit).
+  // Their absolute tolerances are rtol times their size there; see temperature_history.cpp.
+  double t_first = 0.0;
 };
 
 struct SolverStats {
@@ -43,6 +46,7 @@ class TemperatureHistory {
   double t_end() const { return t_end_; }
   const std::vector<double>& initial() const { return T0_; }
   const SolverStats& stats() const { return stats_; }
+  double rtol() const { return opt_.rtol; }
   const CollisionRates& rates() const { return rates_; }
 
   double temperature(double t, std::size_t k) const;

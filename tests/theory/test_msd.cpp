@@ -79,9 +79,9 @@ TEST_CASE("viscoelastic gas: local MSD slope tends to 1/6", "[theory]") {
   auto slope = [&](double t) { return std::log(msd_eq17(h, 0, 1.1 * t) / msd_eq17(h, 0, t / 1.1)) / std::log(1.21); };
   const double s8 = slope(1e8), s11 = slope(1e11);
   std::printf("viscoelastic MSD slope: %.4f at t=1e8, %.4f at t=1e11 (1/6 = %.4f)\n", s8, s11, 1.0 / 6);
-  // Corrections: the O(y²) drift of the cooling law (see the T test) and the finite-t offset of
-  // ⟨R²⟩ ∝ t^(1/6) − const; both shrink with t. 0.03 at t = 1e11.
-  CHECK(std::abs(s11 - 1.0 / 6) < 0.03);
+  // Corrections: the O(y²) ≈ 1.3e-3 drift of the cooling law (see the T test) and the finite-t
+  // offset of ⟨R²⟩ ∝ t^(1/6) − const; measured 1.3e-3 at t = 1e11. Bound 5e-3, as for T.
+  CHECK(std::abs(s11 - 1.0 / 6) < 5e-3);
   CHECK(std::abs(s11 - 1.0 / 6) < std::abs(s8 - 1.0 / 6));
 }
 

@@ -53,10 +53,10 @@ TEST_CASE("viscoelastic gas: T ~ t^(-5/3) at late times", "[theory]") {
   const CollisionRates r = test::viscoelastic_rates({{1, 1, 0.1}}, 0.09);
   const TemperatureHistory h(r, {1.0}, 1e12);
   auto slope = [&](double t) { return std::log(h.temperature(1.1 * t, 0) / h.temperature(t / 1.1, 0)) / std::log(1.21); };
-  std::printf("viscoelastic: d lnT/d lnt = %.5f (t=1e8), %.5f (t=1e12); -5/3 = %.5f\n", slope(1e8), slope(1e11), -5.0 / 3);
-  // The approach is slow: the correction is O(y²) at thermal speed, y² ∝ T^(1/10) ∝ t^(-1/6), about 2e-2
-  // at t = 1e11 for Aκ^(2/5) = 0.09. It must shrink with t and stay within 3e-2 at 1e11.
-  CHECK(std::abs(slope(1e11) + 5.0 / 3) < 3e-2);
+  std::printf("viscoelastic: d lnT/d lnt = %.5f (t=1e8), %.5f (t=1e11); -5/3 = %.5f\n", slope(1e8), slope(1e11), -5.0 / 3);
+  // The approach is slow: the relative correction is O(y²) at thermal speed, y² = 0.09 (2T)^(1/10)
+  // ≈ 1.3e-3 at t = 1e11 (T ≈ 1e-16), measured 1.2e-3. Bound 5e-3: a few times that estimate.
+  CHECK(std::abs(slope(1e11) + 5.0 / 3) < 5e-3);
   CHECK(std::abs(slope(1e11) + 5.0 / 3) < std::abs(slope(1e8) + 5.0 / 3));
 }
 
@@ -68,4 +68,26 @@ TEST_CASE("viscoelastic mixture drifts towards equipartition", "[theory]") {
   std::printf("viscoelastic binary: T2/T1 = %.4f at t=1e3, %.4f at t=1e12\n", early, late);
   CHECK(late < early);  // physics.md §2: ratios drift towards 1 as the gas cools
   CHECK(late > 1.0);
+}
+
+TEST_CASE("accuracy does not depend on which companions are integrated", "[theory]") {
+  // Regression: a 1e-60 absolute tolerance on the companions once made CVODE start at h = 1e-37
+  // and left ln T 1e-4 off at rtol 1e-10. The global error is about 10 rtol (bench/): bound 100 rtol.
+  const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
+  TemperatureOptions ref_opt;
+  ref_opt.rtol = 1e-13;
+  const TemperatureHistory ref(r, {1.0, 1.0}, 1e6, ref_opt);
+  for (int companions = 0; companions < 4; ++companions) {
+    TemperatureOptions o;
+    o.rtol = 1e-10;
+    o.reduced_time = companions == 1;
+    o.diffusion_integral = companions == 2;
+    o.vacf = companions == 3;
+    const TemperatureHistory h(r, {1.0, 1.0}, 1e6, o);
+    double worst = 0.0;
+    for (double t = 1e-6; t <= 1e6; t *= 1.7)
+      for (std::size_t k = 0; k < 2; ++k) worst = std::max(worst, std::abs(h.temperature(t, k) / ref.temperature(t, k) - 1));
+    INFO("companion set " << companions);
+    CHECK(worst <= 1e-8);
+  }
 }
