@@ -53,18 +53,12 @@ double integrand(double w, void* p) {
 
 double moment(double a, model::ViscoelasticForm form, Moment what) {
   model::use_gsl_return_codes();
-  // One workspace per thread: replicas and sweeps may evaluate rates concurrently.
-  struct Workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(64);
-    ~Workspace() { gsl_integration_workspace_free(w); }
-  };
-  thread_local Workspace ws;
-  if (ws.w == nullptr) throw NumericalError("gsl_integration_workspace_alloc failed");
   QuadParams q{a, form, what};
   gsl_function f{integrand, &q};
   double result = 0.0, abserr = 0.0;
   // 1e-12 relative: the rates built on these moments are compared with the series at 1e-8.
-  const int status = gsl_integration_qag(&f, 0.0, 1.3, 0.0, 1e-12, 64, GSL_INTEG_GAUSS31, ws.w, &result, &abserr);
+  const int status = gsl_integration_qag(&f, 0.0, 1.3, 0.0, 1e-12, 64, GSL_INTEG_GAUSS31,
+                                          model::quadrature_workspace(model::QuadratureLevel::inner), &result, &abserr);
   if (status != GSL_SUCCESS)
     throw NumericalError(std::string("collision moment quadrature (gsl_integration_qag): ") + gsl_strerror(status));
   return result;  // ∫ 20 w^39 e^(-w^20) dw = 1: already normalised

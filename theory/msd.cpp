@@ -56,12 +56,6 @@ struct Eq17Integrand {
 double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
   if (t <= 0.0) return 0.0;
   model::use_gsl_return_codes();
-  struct Workspace {
-    gsl_integration_workspace* w = gsl_integration_workspace_alloc(1000);
-    ~Workspace() { gsl_integration_workspace_free(w); }
-  };
-  thread_local Workspace ws;
-  if (ws.w == nullptr) throw NumericalError("gsl_integration_workspace_alloc failed");
   Eq17Integrand integrand{&h, k, h.reduced_time(t, k), std::vector<double>(h.species())};
   gsl_function f{[](double s, void* p) { return (*static_cast<Eq17Integrand*>(p))(s); }, &integrand};
   double result = 0.0, abserr = 0.0;
@@ -69,7 +63,8 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
   // the quadrature for less than 10 rtol is asking for noise. At the default rtol 1e-11 this is
   // 1e-9, a thousand times below the 1e-6 the MSD must reach.
   const double epsrel = std::max(1e-9, 10.0 * h.rtol());
-  const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, epsrel, 1000, GSL_INTEG_GAUSS21, ws.w, &result, &abserr);
+  const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, epsrel, model::quadrature_intervals,
+                                          GSL_INTEG_GAUSS21, model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
   if (status != GSL_SUCCESS)
     throw NumericalError(std::string("MSD Eq. (17) quadrature (gsl_integration_qag) at t = ") + std::to_string(t) +
                          ": " + gsl_strerror(status));

@@ -32,13 +32,11 @@ double tamsd(double D0, double tau_v0, double tau0, double measurement_time, dou
                    return msd_increment(a->D0, a->tau_v0, a->tau0, t, a->lag);
                  },
                  &p};
-  gsl_integration_workspace* w = gsl_integration_workspace_alloc(200);
-  if (w == nullptr) throw NumericalError("gsl_integration_workspace_alloc failed");
   double result = 0.0, abserr = 0.0;
   const double span = measurement_time - lag;
   // 1e-10 relative: far below any statistical error a simulation can reach.
-  const int status = gsl_integration_qag(&f, 0.0, span, 0.0, 1e-10, 200, GSL_INTEG_GAUSS21, w, &result, &abserr);
-  gsl_integration_workspace_free(w);
+  const int status = gsl_integration_qag(&f, 0.0, span, 0.0, 1e-10, model::quadrature_intervals, GSL_INTEG_GAUSS21,
+                                         model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
   if (status != GSL_SUCCESS) throw NumericalError(std::string("TAMSD quadrature: ") + gsl_strerror(status));
   return result / span;
 }
