@@ -15,5 +15,6 @@ void set_command_line(int argc, char** argv);
 // Each returns the action to run once the command line has parsed.
 std::function<int()> add_theory_command(CLI::App& app);
 std::function<int()> add_hcs_command(CLI::App& app);
+std::function<int()> add_dsmc_command(CLI::App& app);
 
 }  // namespace granmix::compare

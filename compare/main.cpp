@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   std::map<std::string, std::function<int()>> actions;
   actions["theory"] = compare::add_theory_command(app);
   actions["hcs"] = compare::add_hcs_command(app);
+  actions["dsmc"] = compare::add_dsmc_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

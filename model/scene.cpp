@@ -141,14 +141,15 @@ Observables read_observables(TomlFields& f) {
   o.rescaled_time = f.flag("rescaled_time", false);
   o.d_ratio = f.flag("d_ratio", false);
   o.gamma = f.flag("gamma", false);
+  o.cumulant = f.flag("cumulant", false);
   if (f.has("tamsd")) {
     TomlFields t = f.sub("tamsd");
     o.tamsd = true;
     o.tamsd_measurement_time = t.positive("measurement_time");
     t.finish();
   }
-  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd))
-    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, rescaled_time, d_ratio, gamma, tamsd");
+  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant))
+    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, rescaled_time, d_ratio, gamma, tamsd, cumulant");
   return o;
 }
 
@@ -194,6 +195,24 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("observables", "tamsd lags (the time grid) must stay below measurement_time", "time.end < measurement_time");
   if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps && s.restitution.is_viscoelastic())
     top.fail("theory", "an ε sweep needs a constant restitution coefficient", "collisions.restitution = number");
+}
+
+DsmcFidelity read_fidelity(TomlFields& f, const std::string& key) {
+  TomlFields t = f.sub(key);
+  // 1e8 particles need ~10 GB with displacements: the machine's memory is the limit.
+  DsmcFidelity d{t.count("particles", 2, 100000000, std::nullopt), t.count("replicas", 1, 100000, std::nullopt)};
+  t.finish();
+  return d;
+}
+
+DsmcSettings read_dsmc(TomlFields& f) {
+  DsmcSettings d;
+  d.present = true;
+  d.method = f.choice("method", {"auto", "direct", "lowrank", "bird"}, "auto");
+  d.rescale = f.flag("rescale", true);
+  d.quick = read_fidelity(f, "quick");
+  d.paper = read_fidelity(f, "paper");
+  return d;
 }
 
 std::string read_file(const std::string& path) {
@@ -253,6 +272,11 @@ Scene load_scene(const std::string& path) {
   if (top.has("theory")) {
     TomlFields t = top.sub("theory");
     s.theory = read_theory(t, s.mixture);
+    t.finish();
+  }
+  if (top.has("dsmc")) {
+    TomlFields t = top.sub("dsmc");
+    s.dsmc = read_dsmc(t);
     t.finish();
   }
   if (top.has("time") || !s.theory.sweep) {

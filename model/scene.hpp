@@ -19,6 +19,7 @@ struct Observables {
   bool d_ratio = false;        // column D_ratio = D_k/D_1 (in time, or settled along a sweep)
   bool gamma = false;          // column gamma = T_1/T_2 (species 0 row)
   bool tamsd = false;          // columns lag, tamsd (lags = the time grid)
+  bool cumulant = false;       // column c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (DSMC; theory with the Sonine solver)
   double tamsd_measurement_time = 0.0;
 };
 
@@ -36,6 +37,20 @@ struct TheorySettings {
   std::optional<Sweep> sweep;      // settled quantities along a parameter
 };
 
+// [dsmc]: how to simulate the scene (design.md §4). Particles are a total, split over species in
+// proportion to the number densities; one set per fidelity.
+struct DsmcFidelity {
+  std::size_t particles = 0;
+  std::size_t replicas = 0;
+};
+
+struct DsmcSettings {
+  bool present = false;
+  std::string method = "auto";  // auto | direct | lowrank | bird
+  bool rescale = true;          // scale initial velocities to exactly T_k(0)
+  DsmcFidelity quick, paper;
+};
+
 struct Scene {
   std::string file;    // path as given
   std::string text;    // file content (hashed for provenance)
@@ -47,6 +62,7 @@ struct Scene {
   std::vector<double> times;
   Observables observables;
   TheorySettings theory;
+  DsmcSettings dsmc;
 };
 
 // Throws InputError("file:line: key: what is wrong (allowed: …)").

@@ -1,0 +1,56 @@
+#pragma once
+// Replicas of one DSMC set-up run in parallel (OpenMP), each with its own stream (seed, replica);
+// every observable is reported as mean and standard error over replicas. Results do not depend on
+// the number of threads: replica r always computes the same numbers and the reduction runs in
+// replica order.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/mixture.hpp"
+#include "model/restitution.hpp"
+
+namespace granmix::dsmc {
+
+enum class Method { automatic, direct, lowrank, bird };
+Method parse_method(const std::string& name);  // throws std::invalid_argument
+const char* to_string(Method m);
+
+struct DsmcSetup {
+  model::Mixture mixture{{model::Species{}}};
+  model::Restitution law = model::Restitution::constant(1, 1.0);
+  std::vector<std::vector<double>> chi;  // empty: dilute
+  std::vector<std::size_t> counts;       // particles per species
+  std::vector<double> T0;                // initial temperatures
+  std::vector<double> times;             // sample times (increasing)
+  Method method = Method::automatic;     // automatic: direct up to 8 species, low-rank above
+  bool msd = false, cumulant = false, rescale = true;
+  std::uint64_t seed = 1;
+  std::size_t replicas = 1;
+  int threads = 0;  // 0: all cores
+  std::function<void(std::size_t done, std::size_t total)> progress;  // called as replicas finish
+};
+
+struct Estimate {
+  std::vector<double> mean, err;  // standard error of the mean over replicas (0 for one replica)
+};
+
+struct DsmcResult {
+  Method method = Method::direct;
+  std::size_t species = 0, times = 0, replicas = 0, particles = 0;
+  Estimate T, msd, cumulant;     // [time * M + k]
+  Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
+  std::uint64_t trials = 0, accepted = 0;
+  double seconds = 0.0;          // wall time of the ensemble
+  double volume = 0.0;
+  double acceptance() const { return trials ? double(accepted) / double(trials) : 0.0; }
+  double collisions_per_second() const { return seconds > 0 ? double(accepted) / seconds : 0.0; }
+};
+
+DsmcResult run_ensemble(const DsmcSetup& setup);
+
+// Particles per species for a total N, proportional to the number densities (rounded).
+std::vector<std::size_t> counts_for(const model::Mixture& mix, std::size_t total);
+
+}  // namespace granmix::dsmc

@@ -1,0 +1,78 @@
+#pragma once
+// The one event-driven DSMC loop, exact in time (no time step), parameterised at compile time by
+// the pair selector so that its proposal inlines (design.md §5). Steps (v1 Sec. II B, made exact
+// for any selector): waiting time from the total majorant rate; a proposed pair; acceptance
+// |g|/scale; direction e from the |g·e|-weighted hemisphere; ε at |g·e|; the collision.
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+#include "collision_rule.hpp"
+#include "model/restitution.hpp"
+#include "selectors.hpp"
+
+namespace granmix::dsmc {
+
+struct Counters {
+  std::uint64_t trials = 0, accepted = 0, refreshes = 0;
+  std::vector<std::uint64_t> pair_collisions;  // [i*M + k], i <= k
+};
+
+template <class Selector>
+class EventLoop {
+ public:
+  // Maximum speeds are raised at every collision and recomputed from the particles every
+  // refresh_every accepted collisions, so that the acceptance does not decay as the gas cools.
+  EventLoop(Particles& p, Selector& sel, const model::Restitution& law, Rng& rng, Counters& c, std::uint64_t refresh_every)
+      : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every) {
+    c_.pair_collisions.assign(p.species() * p.species(), 0);
+  }
+
+  double time() const { return t_; }
+
+  // Advance to t_stop. The Poisson process is memoryless: the waiting time that would cross
+  // t_stop is discarded and a fresh one drawn on the next call.
+  void run_until(double t_stop) {
+    for (;;) {
+      const double t_next = t_ + rng_.exponential(sel_.total_rate());
+      if (!(t_next < t_stop)) {
+        t_ = t_stop;
+        return;
+      }
+      t_ = t_next;
+      ++c_.trials;
+      const Proposal q = sel_.propose(rng_, p_);
+      if (q.a == q.b) continue;  // a particle with itself: zero true rate
+      const Vec3 g{p_.vx[q.a] - p_.vx[q.b], p_.vy[q.a] - p_.vy[q.b], p_.vz[q.a] - p_.vz[q.b]};
+      const double gn = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+      if (!(rng_.uniform() * q.scale < gn)) continue;
+      const Vec3 e = rng_.hemisphere({g.x / gn, g.y / gn, g.z / gn});
+      const double g_dot_e = g.x * e.x + g.y * e.y + g.z * e.z;
+      const double eps = law_.eps_at(q.i, q.k, g_dot_e);
+      if (p_.track_displacement) advance_displacement(p_, q.a, t_), advance_displacement(p_, q.b, t_);
+      collide(p_, q.a, q.b, p_.mass[q.i], p_.mass[q.k], eps, e, g_dot_e);
+      ++c_.accepted;
+      ++c_.pair_collisions[q.i <= q.k ? q.i * p_.species() + q.k : q.k * p_.species() + q.i];
+      sel_.raise_speed(q.i, speed(q.a), p_);
+      sel_.raise_speed(q.k, speed(q.b), p_);
+      if (++since_refresh_ >= refresh_every_) {
+        sel_.refresh(p_);
+        since_refresh_ = 0;
+        ++c_.refreshes;
+      }
+    }
+  }
+
+ private:
+  double speed(std::size_t a) const { return std::sqrt(p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); }
+
+  Particles& p_;
+  Selector& sel_;
+  const model::Restitution& law_;
+  Rng& rng_;
+  Counters& c_;
+  std::uint64_t refresh_every_, since_refresh_ = 0;
+  double t_ = 0.0;
+};
+
+}  // namespace granmix::dsmc

@@ -1,0 +1,62 @@
+#pragma once
+// Random streams of the DSMC: one pcg64 stream per replica, derived from (master seed, replica),
+// so results are identical for any number of threads (design.md §5). The distributions are
+// written here, not taken from <random>, so that a stream gives the same numbers with every
+// standard library.
+#include <pcg_random.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+namespace granmix::dsmc {
+
+struct Vec3 {
+  double x, y, z;
+};
+
+class Rng {
+ public:
+  Rng(std::uint64_t seed, std::uint64_t replica) : gen_(seed, replica) {}
+
+  // Uniform in [0, 1) with 53 random bits.
+  double uniform() { return static_cast<double>(gen_() >> 11) * 0x1.0p-53; }
+  // Uniform in (0, 1]: safe under a logarithm.
+  double uniform_open0() { return (static_cast<double>(gen_() >> 11) + 1.0) * 0x1.0p-53; }
+  // Uniform integer in [0, n): Lemire's multiply-shift with rejection (unbiased).
+  std::uint64_t below(std::uint64_t n) {
+    for (;;) {
+      const __uint128_t m = static_cast<__uint128_t>(gen_()) * n;
+      const std::uint64_t low = static_cast<std::uint64_t>(m);
+      if (low >= n || low >= (-n) % n) return static_cast<std::uint64_t>(m >> 64);
+    }
+  }
+  // Standard normal, Marsaglia's polar method (no cached second value: simpler to reproduce).
+  double normal() {
+    for (;;) {
+      const double u = 2.0 * uniform() - 1.0, v = 2.0 * uniform() - 1.0, s = u * u + v * v;
+      if (s > 0.0 && s < 1.0) return u * std::sqrt(-2.0 * std::log(s) / s);
+    }
+  }
+  // Exponential waiting time of a Poisson process of the given rate.
+  double exponential(double rate) { return -std::log(uniform_open0()) / rate; }
+
+  // Unit vector e around the unit vector n with density ∝ (n·e) on the hemisphere n·e > 0:
+  // cos θ = √u, the distribution of collision directions weighted by the normal speed.
+  Vec3 hemisphere(const Vec3& n) {
+    const double c = std::sqrt(uniform()), s = std::sqrt(1.0 - c * c);
+    const double phi = 2.0 * std::numbers::pi * uniform();
+    // Orthonormal p, q perpendicular to n (branch-free construction of Duff et al. 2017).
+    const double sign = std::copysign(1.0, n.z);
+    const double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
+    const Vec3 p{1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
+    const Vec3 q{b, sign + n.y * n.y * a, -n.y};
+    const double cp = s * std::cos(phi), cq = s * std::sin(phi);
+    return {c * n.x + cp * p.x + cq * q.x, c * n.y + cp * p.y + cq * q.y, c * n.z + cp * p.z + cq * q.z};
+  }
+
+ private:
+  pcg64 gen_;
+};
+
+}  // namespace granmix::dsmc

@@ -1,0 +1,115 @@
+#include "scene_dsmc.hpp"
+
+#include <cmath>
+
+#include "model/enskog.hpp"
+#include "model/errors.hpp"
+#include "theory/initial_state.hpp"
+#include "theory/scene_theory.hpp"
+
+namespace granmix::dsmc {
+
+namespace {
+
+using model::Table;
+
+// Density-weighted mean over species and its standard error (replica correlations between
+// species are ignored: species errors are combined as if independent).
+std::pair<double, double> weighted(const model::Mixture& mix, const Estimate& e, std::size_t j) {
+  const std::size_t M = mix.size();
+  double m = 0.0, v = 0.0;
+  for (std::size_t k = 0; k < M; ++k) {
+    const double w = mix[k].density / mix.total_density();
+    m += w * e.mean[j * M + k];
+    v += w * w * e.err[j * M + k] * e.err[j * M + k];
+  }
+  return {m, std::sqrt(v)};
+}
+
+Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult& r) {
+  const auto& o = s.observables;
+  const std::size_t M = s.mixture.size();
+  Table t;
+  t.columns = {"t", "species"};
+  auto add = [&](const char* name) { t.columns.push_back(name), t.columns.push_back(std::string(name) + "_err"); };
+  if (o.temperatures) add("T");
+  if (o.msd) add("msd");
+  if (o.cumulant) add("c");
+  if (o.gamma) add("gamma");
+  add("collisions");
+  const double nan = Table::missing;
+  for (std::size_t j = 0; j < setup.times.size(); ++j) {
+    for (std::size_t k = 0; k <= M; ++k) {
+      if (k == 0 && M == 1) continue;
+      std::vector<double> row = {setup.times[j], double(k)};
+      auto species_value = [&](const Estimate& e) {
+        if (k > 0) return std::pair{e.mean[j * M + k - 1], e.err[j * M + k - 1]};
+        return weighted(s.mixture, e, j);
+      };
+      auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
+      if (o.temperatures) push(species_value(r.T));
+      if (o.msd) push(species_value(r.msd));
+      if (o.cumulant) push(k > 0 ? species_value(r.cumulant) : std::pair{nan, nan});
+      if (o.gamma) {
+        if (k == 0) {  // γ = T_1/T_2 with relative errors added in quadrature
+          const double a = r.T.mean[j * M], b = r.T.mean[j * M + 1], g = a / b;
+          push({g, g * std::hypot(r.T.err[j * M] / a, r.T.err[j * M + 1] / b)});
+        } else {
+          push({nan, nan});
+        }
+      }
+      // Collisions per particle: species k takes part in C_ik for i != k once and in C_kk twice.
+      double c = 0.0, ce2 = 0.0, particles = 0.0;
+      for (std::size_t a = 0; a < M; ++a)
+        for (std::size_t b = a; b < M; ++b) {
+          const std::size_t idx = j * M * M + a * M + b;
+          const double times = k == 0 ? 2.0 : (a == k - 1 ? 1.0 : 0.0) + (b == k - 1 ? 1.0 : 0.0);
+          c += times * r.pair_collisions.mean[idx];
+          ce2 += times * times * r.pair_collisions.err[idx] * r.pair_collisions.err[idx];
+        }
+      particles = k == 0 ? double(r.particles) : double(setup.counts[k - 1]);
+      push({c / particles, std::sqrt(ce2) / particles});
+      t.rows.push_back(std::move(row));
+    }
+  }
+  return t;
+}
+
+}  // namespace
+
+DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
+                       const std::function<void(std::size_t, std::size_t)>& progress) {
+  if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
+  if (s.theory.sweep) throw InputError(s.file + ": a sweep scene is theory only (no [dsmc] time series)");
+  if (s.initial.kind == model::InitialState::Kind::aged)
+    throw InputError(s.file + ": initial.temperatures = \"aged\" is not simulated yet (DSMC issue: aging run)");
+  if (s.observables.tamsd || s.observables.d_ratio || s.observables.rescaled_time)
+    throw InputError(s.file + ": DSMC does not measure tamsd, d_ratio or rescaled_time yet");
+  const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
+  DsmcRun run;
+  DsmcSetup& d = run.setup;
+  d.mixture = s.mixture;
+  d.law = s.restitution;
+  if (s.enskog) d.chi = model::enskog_contact_values(s.mixture);
+  d.counts = counts_for(s.mixture, f.particles);
+  for (std::size_t k = 0; k < d.counts.size(); ++k)
+    if (d.counts[k] == 0)
+      throw InputError(s.file + ": dsmc." + fidelity + ".particles = " + std::to_string(f.particles) + " leaves species " +
+                       std::to_string(k + 1) + " without particles (allowed: enough for every species)");
+  const theory::CollisionRates rates = theory::scene_rates(s, s.mixture, s.restitution);
+  d.T0 = theory::initial_temperatures(s.initial, rates);
+  d.times = s.times;
+  d.method = parse_method(s.dsmc.method);
+  d.msd = s.observables.msd;
+  d.cumulant = s.observables.cumulant;
+  d.rescale = s.dsmc.rescale;
+  d.seed = seed;
+  d.replicas = f.replicas;
+  d.threads = threads;
+  d.progress = progress;
+  run.result = run_ensemble(d);
+  run.table = make_table(s, d, run.result);
+  return run;
+}
+
+}  // namespace granmix::dsmc

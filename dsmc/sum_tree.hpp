@@ -1,0 +1,24 @@
+#pragma once
+// A sum tree over non-negative weights: O(log M) update of one weight and O(log M) sampling of an
+// index with probability weight/total (v1 Sec. II B: the "segment trees" of the low-rank method).
+#include <cstddef>
+#include <vector>
+
+namespace granmix::dsmc {
+
+class SumTree {
+ public:
+  explicit SumTree(const std::vector<double>& weights);
+  void set(std::size_t i, double w);
+  double weight(std::size_t i) const { return node_[leaves_ + i]; }
+  double total() const { return node_[1]; }
+  // Index i with Σ_{j<i} w_j <= u·total < Σ_{j<=i} w_j, for u in [0, 1).
+  std::size_t sample(double u) const;
+  std::size_t size() const { return size_; }
+
+ private:
+  std::size_t size_, leaves_;
+  std::vector<double> node_;  // 1-based heap: node_[1] root, leaves at [leaves_, 2 leaves_)
+};
+
+}  // namespace granmix::dsmc

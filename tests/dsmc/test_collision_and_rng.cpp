@@ -1,0 +1,117 @@
+// The collision rule (physics.md §1), the random streams and the sum tree, one piece at a time.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "dsmc/collision_rule.hpp"
+#include "dsmc/rng.hpp"
+#include "dsmc/sum_tree.hpp"
+
+using namespace granmix;
+using namespace granmix::dsmc;
+
+namespace {
+Particles two_particles(double ma, double mb) {
+  Particles p;
+  p.offset = {0, 1, 2};
+  p.mass = {ma, mb};
+  p.vx = {1.3, -0.4}, p.vy = {-0.2, 0.9}, p.vz = {0.7, 0.1};
+  return p;
+}
+}  // namespace
+
+TEST_CASE("one collision: momentum to 1e-13 and the energy loss (1-eps^2) m_eff (g.e)^2/2", "[dsmc]") {
+  Rng rng(11, 0);
+  for (double eps : {0.0, 0.3, 0.9, 1.0})
+    for (double mb : {1.0, 100.0, 1e4}) {
+      Particles p = two_particles(1.0, mb);
+      const Vec3 g{p.vx[0] - p.vx[1], p.vy[0] - p.vy[1], p.vz[0] - p.vz[1]};
+      const double gn = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+      const Vec3 e = rng.hemisphere({g.x / gn, g.y / gn, g.z / gn});
+      const double ge = g.x * e.x + g.y * e.y + g.z * e.z;
+      REQUIRE(ge > 0.0);
+      auto momentum = [&](int c) {
+        const auto& v = c == 0 ? p.vx : c == 1 ? p.vy : p.vz;
+        return v[0] + mb * v[1];
+      };
+      auto energy = [&] {
+        return 0.5 * (p.vx[0] * p.vx[0] + p.vy[0] * p.vy[0] + p.vz[0] * p.vz[0]) +
+               0.5 * mb * (p.vx[1] * p.vx[1] + p.vy[1] * p.vy[1] + p.vz[1] * p.vz[1]);
+      };
+      const double P[3] = {momentum(0), momentum(1), momentum(2)}, E = energy();
+      collide(p, 0, 1, 1.0, mb, eps, e, ge);
+      // Rounding of a few operations on numbers of size mb|v|: 1e-13 relative.
+      for (int c = 0; c < 3; ++c) CHECK(std::abs(momentum(c) - P[c]) <= 1e-13 * (1 + mb));
+      const double meff = mb / (1 + mb);
+      CHECK(E - energy() == Approx((1 - eps * eps) * meff * ge * ge / 2).epsilon(1e-12).margin(1e-14 * E));
+      // After the collision the normal relative speed is reversed and scaled by ε (v1 Eq. 4).
+      const double ge_after = (p.vx[0] - p.vx[1]) * e.x + (p.vy[0] - p.vy[1]) * e.y + (p.vz[0] - p.vz[1]) * e.z;
+      CHECK(ge_after == Approx(-eps * ge).margin(1e-13));
+    }
+}
+
+TEST_CASE("hemisphere directions: unit, on the side of n, <cos> = 2/3", "[dsmc]") {
+  Rng rng(5, 2);
+  const Vec3 n{0.6, 0.0, -0.8};
+  const int N = 200000;
+  double sum = 0.0, sum2 = 0.0;
+  for (int j = 0; j < N; ++j) {
+    const Vec3 e = rng.hemisphere(n);
+    const double c = e.x * n.x + e.y * n.y + e.z * n.z;
+    REQUIRE(std::abs(e.x * e.x + e.y * e.y + e.z * e.z - 1) < 1e-14);
+    REQUIRE(c >= 0.0);
+    sum += c, sum2 += c * c;
+  }
+  // Density ∝ cos θ: ⟨cos θ⟩ = 2/3, ⟨cos² θ⟩ = 1/2; z-score bound 4.
+  const double mean = sum / N, sd = std::sqrt(sum2 / N - mean * mean) / std::sqrt(double(N));
+  std::printf("hemisphere: <cos> = %.5f, z = %.2f\n", mean, (mean - 2.0 / 3) / sd);
+  CHECK(std::abs(mean - 2.0 / 3) < 4 * sd);
+}
+
+TEST_CASE("normal draws and bounded integers", "[dsmc]") {
+  Rng rng(1, 0);
+  const int N = 400000;
+  double s = 0, s2 = 0;
+  std::vector<int> bins(7, 0);
+  for (int j = 0; j < N; ++j) {
+    const double x = rng.normal();
+    s += x, s2 += x * x;
+    ++bins[rng.below(7)];
+  }
+  // Mean 0 (sd 1/√N) and variance 1 (sd √(2/N)): z bound 4.
+  CHECK(std::abs(s / N) < 4 / std::sqrt(double(N)));
+  CHECK(std::abs(s2 / N - 1) < 4 * std::sqrt(2.0 / N));
+  double chi2 = 0;
+  for (int b : bins) chi2 += std::pow(b - N / 7.0, 2) / (N / 7.0);
+  CHECK(chi2 < 22.5);  // χ² with 6 degrees of freedom: P(> 22.5) = 1e-3
+}
+
+TEST_CASE("streams: same (seed, replica) repeat, different ones differ", "[dsmc]") {
+  Rng a(7, 3), b(7, 3), c(7, 4), d(8, 3);
+  const double x = a.uniform();
+  CHECK(x == b.uniform());
+  CHECK(x != c.uniform());
+  CHECK(x != d.uniform());
+}
+
+TEST_CASE("sum tree: sampling frequencies and updates", "[dsmc]") {
+  std::vector<double> w = {0.5, 0.0, 2.0, 1.0, 0.25};
+  SumTree t(w);
+  CHECK(t.total() == Approx(3.75));
+  t.set(1, 1.25);
+  w[1] = 1.25;
+  CHECK(t.total() == Approx(5.0));
+  Rng rng(3, 0);
+  const int N = 500000;
+  std::vector<int> hits(w.size(), 0);
+  for (int j = 0; j < N; ++j) ++hits[t.sample(rng.uniform())];
+  double chi2 = 0;
+  for (std::size_t i = 0; i < w.size(); ++i) {
+    const double expect = N * w[i] / 5.0;
+    chi2 += std::pow(hits[i] - expect, 2) / expect;
+  }
+  CHECK(chi2 < 18.5);  // 4 degrees of freedom: P(> 18.5) = 1e-3
+  t.set(2, 0.0);
+  for (int j = 0; j < 10000; ++j) CHECK(t.sample(rng.uniform()) != 2);
+}
