@@ -122,3 +122,41 @@ TEST_CASE("granmix hcs: bad usage exits 2 with a message", "[compare]") {
     CHECK(!r.output.empty());
   }
 }
+
+namespace {
+std::string data_lines(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind("#", 0) != 0) out += line + "\n";
+  return out;
+}
+}  // namespace
+
+TEST_CASE("granmix dsmc bo1-fig02: columns with errors and identical data for 1 and 2 threads", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("dsmc");
+  const std::string scene = test::scene_path("bo1-fig02.toml");
+  const auto a = test::run_granmix("dsmc " + scene + " --out " + (d / "a").string() + " --threads 1 --seed 3");
+  const auto b = test::run_granmix("dsmc " + scene + " --out " + (d / "b").string() + " --threads 2 --seed 3");
+  INFO(a.output << b.output);
+  REQUIRE(a.code == 0);
+  REQUIRE(b.code == 0);
+  CHECK(a.output.find("collisions/s") != std::string::npos);  // end-of-run summary
+  const Tsv t = read_tsv(d / "a" / "bo1-fig02" / "dsmc.tsv");
+  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "T_err", "msd", "msd_err", "collisions", "collisions_err"});
+  CHECK(t.comments[2].find("# seed: 3") == 0);
+  CHECK(t.comments[3] == "# fidelity: quick");
+  // Provenance differs (command, date); the numbers must not (design.md §5).
+  CHECK(data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv") == data_lines(d / "b" / "bo1-fig02" / "dsmc.tsv"));
+  const auto c = test::run_granmix("dsmc " + scene + " --out " + (d / "c").string() + " --seed 4");
+  CHECK(data_lines(d / "c" / "bo1-fig02" / "dsmc.tsv") != data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv"));
+}
+
+TEST_CASE("granmix dsmc refuses scenes it cannot simulate with exit 2", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("dsmc-bad");
+  const auto r = test::run_granmix("dsmc " + test::scene_path("bo1-fig05.toml") + " --out " + d.string());
+  CHECK(r.code == 2);
+  CHECK(r.output.find("no [dsmc] table") != std::string::npos);
+  CHECK(!std::filesystem::exists(d / "bo1-fig05"));
+  CHECK(test::run_granmix("dsmc " + test::scene_path("bo1-fig02.toml") + " --fidelity fast").code == 2);
+}

@@ -51,7 +51,7 @@ TEST_CASE("one collision: momentum to 1e-13 and the energy loss (1-eps^2) m_eff 
     }
 }
 
-TEST_CASE("hemisphere directions: unit, on the side of n, <cos> = 2/3", "[dsmc]") {
+TEST_CASE("hemisphere directions: unit - on the side of n - <cos> = 2/3", "[dsmc]") {
   Rng rng(5, 2);
   const Vec3 n{0.6, 0.0, -0.8};
   const int N = 200000;
@@ -87,7 +87,7 @@ TEST_CASE("normal draws and bounded integers", "[dsmc]") {
   CHECK(chi2 < 22.5);  // χ² with 6 degrees of freedom: P(> 22.5) = 1e-3
 }
 
-TEST_CASE("streams: same (seed, replica) repeat, different ones differ", "[dsmc]") {
+TEST_CASE("streams: same (seed - replica) repeat - different ones differ", "[dsmc]") {
   Rng a(7, 3), b(7, 3), c(7, 4), d(8, 3);
   const double x = a.uniform();
   CHECK(x == b.uniform());

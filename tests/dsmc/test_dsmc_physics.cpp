@@ -95,7 +95,7 @@ TEST_CASE("low-rank trees propose species pairs with the exact majorant probabil
   CHECK(sel.total_rate() == Approx(pi / pairs.volume * total).epsilon(1e-12));
 }
 
-TEST_CASE("selectors agree: 5 species, eps = 0.7, temperatures and collisions per pair", "[dsmc]") {
+TEST_CASE("selectors agree: 5 species - eps = 0.7 - temperatures and collisions per pair", "[dsmc]") {
   const std::vector<model::Species> sp = {{1, 1, 0.1}, {2, 1.26, 0.08}, {3, 1.44, 0.06}, {4, 1.59, 0.04}, {5, 1.71, 0.02}};
   std::vector<DsmcResult> r;
   for (Method m : {Method::direct, Method::lowrank, Method::bird})
@@ -117,7 +117,7 @@ TEST_CASE("selectors agree: 5 species, eps = 0.7, temperatures and collisions pe
   CHECK(worst < 4.5);  // 120 comparisons: 4.5 keeps the chance of a false alarm below 1e-3
 }
 
-TEST_CASE("Haff's law with the first-Sonine cooling rate, eps = 0.9", "[dsmc]") {
+TEST_CASE("Haff's law with the first-Sonine cooling rate - eps = 0.9", "[dsmc]") {
   const double e = 0.9;
   DsmcSetup s = setup({{1, 1, 0.1}}, e, {20000}, {10.0, 50.0, 200.0}, 8);
   const DsmcResult r = run_ensemble(s);
@@ -135,7 +135,7 @@ TEST_CASE("Haff's law with the first-Sonine cooling rate, eps = 0.9", "[dsmc]") 
   }
 }
 
-TEST_CASE("binary m = 1, 100 of one material, eps = 0.5: temperature ratio settles to theory within the Maxwellian model error", "[dsmc]") {
+TEST_CASE("binary m = 1 - 100 of one material - eps = 0.5: temperature ratio settles to theory within the Maxwellian model error", "[dsmc]") {
   const std::vector<model::Species> sp = {{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}};
   DsmcSetup s = setup(sp, 0.5, {10000, 10000}, {1e3}, 4);
   const DsmcResult r = run_ensemble(s);
@@ -152,7 +152,7 @@ TEST_CASE("binary m = 1, 100 of one material, eps = 0.5: temperature ratio settl
   CHECK(std::abs(ratio / theory_ratio - 1) < 0.03);
 }
 
-TEST_CASE("reproducible: same seed gives identical results on 1 and 2 threads; another seed differs", "[dsmc]") {
+TEST_CASE("reproducible: same seed gives identical results on 1 and 2 threads - another seed differs", "[dsmc]") {
   DsmcSetup s = setup({{1, 1, 0.1}, {4, 1.5, 0.05}}, 0.8, {3000, 1500}, {1.0, 4.0}, 4);
   s.msd = true, s.cumulant = true;
   s.threads = 1;
