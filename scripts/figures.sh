@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Theory figures of every scene already computed under OUT (by `make validate`): a PNG beside
-# each theory.tsv, drawn with plots/style.gp. Needs gnuplot; without it the data stays and this
+# Figures of every scene already computed under OUT (by `make validate`): a PNG beside each
+# theory.tsv, theory as lines and DSMC (when dsmc.tsv is there) as symbols with error bars,
+# drawn with plots/style.gp. Needs gnuplot; without it the data stays and this
 # script says how to get the figures.
 set -euo pipefail
 out=${1:-out}
@@ -29,6 +30,10 @@ for tsv in "$out"/*/theory.tsv; do
     label="species $k"; style="ls $((k > 0 ? k : 9))"
     [ "$k" -eq 0 ] && label="total"
     plot+="${plot:+, }'$tsv' every $stride::$((k - lowest)) using (column('$x')):(column('$y')) with lines $style title '$label'"
+    # DSMC beside theory: symbols with standard-error bars, same rows and colours.
+    if [ -f "$dir/dsmc.tsv" ] && grep -v '^#' "$dir/dsmc.tsv" | head -1 | grep -qw "${y}_err"; then
+      plot+=", '$dir/dsmc.tsv' every $stride::$((k - lowest)) using (column('$x')):(column('$y')):(column('${y}_err')) with yerrorbars $style pt 7 ps 0.6 title '$label DSMC'"
+    fi
   done
   gnuplot -e "load 'plots/style.gp'; set output '$dir/$name.png'; $logs; set xlabel \"$xl\"; set ylabel \"$yl\"; set title \"$title\" noenhanced; plot $plot"
   echo "figures: $dir/$name.png"
