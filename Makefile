@@ -24,6 +24,7 @@ figures: validate
 
 bench: build
 	@$(BUILD)/bench/granmix_bench_theory
+	@$(BUILD)/bench/granmix_bench_dsmc
 
 clean:
 	rm -rf $(BUILD) $(OUT)
