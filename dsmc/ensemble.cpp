@@ -73,6 +73,10 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   Selector sel(pairs, p);
   Counters c;
   EventLoop<Selector> loop(p, sel, s.law, rng, c, p.size());
+  if (s.aged) {
+    loop.cool_to(1.5 * double(p.size()));  // ⟨T⟩ = 2E/(3N) = 1
+    loop.reset_clock();
+  }
   ReplicaRecord out;
   for (double t : s.times) {
     loop.run_until(t);

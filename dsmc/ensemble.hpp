@@ -26,6 +26,9 @@ struct DsmcSetup {
   std::vector<double> times;             // sample times (increasing)
   Method method = Method::automatic;     // automatic: direct up to 8 species, low-rank above
   bool msd = false, cumulant = false, rescale = true;
+  // Aged start (v1 Fig. 3 dashed): T0 is the hot start; the gas cools until ⟨T⟩ = 1, then the
+  // clock, displacements and collision counts are reset and the measurement begins.
+  bool aged = false;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores

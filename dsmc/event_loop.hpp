@@ -3,8 +3,10 @@
 // the pair selector so that its proposal inlines (design.md §5). Steps (v1 Sec. II B, made exact
 // for any selector): waiting time from the total majorant rate; a proposed pair; acceptance
 // |g|/scale; direction e from the |g·e|-weighted hemisphere; ε at |g·e|; the collision.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "collision_rule.hpp"
@@ -18,22 +20,41 @@ struct Counters {
   std::vector<std::uint64_t> pair_collisions;  // [i*M + k], i <= k
 };
 
+// Total kinetic energy Σ m v²/2.
+double kinetic_energy(const Particles& p);
+
 template <class Selector>
 class EventLoop {
  public:
   // Maximum speeds are raised at every collision and recomputed from the particles every
   // refresh_every accepted collisions, so that the acceptance does not decay as the gas cools.
   EventLoop(Particles& p, Selector& sel, const model::Restitution& law, Rng& rng, Counters& c, std::uint64_t refresh_every)
-      : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every) {
+      : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every), energy_(kinetic_energy(p)) {
     c_.pair_collisions.assign(p.species() * p.species(), 0);
   }
 
   double time() const { return t_; }
+  double energy() const { return energy_; }
 
   // Advance to t_stop. The Poisson process is memoryless: the waiting time that would cross
   // t_stop is discarded and a fresh one drawn on the next call.
-  void run_until(double t_stop) {
-    for (;;) {
+  void run_until(double t_stop) { advance(t_stop, -1.0); }
+
+  // Collide until the kinetic energy falls to energy_stop or below (v1 Fig. 3: age the gas until
+  // ⟨T⟩ = 2E/(3N) = 1); it lands within one collision's loss, O(1/N) relative, of the target.
+  void cool_to(double energy_stop) { advance(std::numeric_limits<double>::infinity(), energy_stop); }
+
+  // Start the measurement here: t = 0, displacements and collision counts zero (v1 Fig. 3 dashed).
+  void reset_clock() {
+    t_ = 0.0;
+    if (p_.track_displacement)
+      for (std::size_t a = 0; a < p_.size(); ++a) p_.rx[a] = p_.ry[a] = p_.rz[a] = p_.t_last[a] = 0.0;
+    std::fill(c_.pair_collisions.begin(), c_.pair_collisions.end(), 0);
+  }
+
+ private:
+  void advance(double t_stop, double energy_stop) {
+    while (energy_ > energy_stop) {
       const double t_next = t_ + rng_.exponential(sel_.total_rate());
       if (!(t_next < t_stop)) {
         t_ = t_stop;
@@ -49,21 +70,23 @@ class EventLoop {
       const Vec3 e = rng_.hemisphere({g.x / gn, g.y / gn, g.z / gn});
       const double g_dot_e = g.x * e.x + g.y * e.y + g.z * e.z;
       const double eps = law_.eps_at(q.i, q.k, g_dot_e);
+      const double ma = p_.mass[q.i], mb = p_.mass[q.k];
       if (p_.track_displacement) advance_displacement(p_, q.a, t_), advance_displacement(p_, q.b, t_);
-      collide(p_, q.a, q.b, p_.mass[q.i], p_.mass[q.k], eps, e, g_dot_e);
+      collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e);
+      energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
       ++c_.accepted;
       ++c_.pair_collisions[q.i <= q.k ? q.i * p_.species() + q.k : q.k * p_.species() + q.i];
       sel_.raise_speed(q.i, speed(q.a), p_);
       sel_.raise_speed(q.k, speed(q.b), p_);
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
+        energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
         since_refresh_ = 0;
         ++c_.refreshes;
       }
     }
   }
 
- private:
   double speed(std::size_t a) const { return std::sqrt(p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); }
 
   Particles& p_;
@@ -73,6 +96,7 @@ class EventLoop {
   Counters& c_;
   std::uint64_t refresh_every_, since_refresh_ = 0;
   double t_ = 0.0;
+  double energy_;
 };
 
 }  // namespace granmix::dsmc

@@ -53,3 +53,17 @@ double speed_max(const Particles& p, std::size_t k) {
 }
 
 }  // namespace granmix::dsmc
+
+namespace granmix::dsmc {
+
+double kinetic_energy(const Particles& p) {
+  double e = 0.0;
+  for (std::size_t k = 0; k < p.species(); ++k) {
+    double s = 0.0;
+    for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
+    e += 0.5 * p.mass[k] * s;
+  }
+  return e;
+}
+
+}  // namespace granmix::dsmc

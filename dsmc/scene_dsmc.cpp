@@ -81,8 +81,6 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
                        const std::function<void(std::size_t, std::size_t)>& progress) {
   if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
   if (s.theory.sweep) throw InputError(s.file + ": a sweep scene is theory only (no [dsmc] time series)");
-  if (s.initial.kind == model::InitialState::Kind::aged)
-    throw InputError(s.file + ": initial.temperatures = \"aged\" is not simulated yet (DSMC issue: aging run)");
   if (s.observables.tamsd || s.observables.d_ratio || s.observables.rescaled_time)
     throw InputError(s.file + ": DSMC does not measure tamsd, d_ratio or rescaled_time yet");
   const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
@@ -97,7 +95,8 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
       throw InputError(s.file + ": dsmc." + fidelity + ".particles = " + std::to_string(f.particles) + " leaves species " +
                        std::to_string(k + 1) + " without particles (allowed: enough for every species)");
   const theory::CollisionRates rates = theory::scene_rates(s, s.mixture, s.restitution);
-  d.T0 = theory::initial_temperatures(s.initial, rates);
+  d.aged = s.initial.kind == model::InitialState::Kind::aged;
+  d.T0 = d.aged ? std::vector<double>(s.mixture.size(), s.initial.T_hot) : theory::initial_temperatures(s.initial, rates);
   d.times = s.times;
   d.method = parse_method(s.dsmc.method);
   d.msd = s.observables.msd;

@@ -9,6 +9,7 @@
 #include "dsmc/selectors.hpp"
 #include "model/enskog.hpp"
 #include "theory/diffusion.hpp"
+#include "theory/initial_state.hpp"
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/temperature_history.hpp"
@@ -165,4 +166,52 @@ TEST_CASE("reproducible: same seed gives identical results on 1 and 2 threads - 
   CHECK(a.accepted == b.accepted);
   s.seed += 1;
   CHECK(run_ensemble(s).T.mean != a.T.mean);
+}
+
+TEST_CASE("elastic binary: temperatures stay put and cumulants stay 0", "[dsmc]") {
+  DsmcSetup s = setup({{1, 1, 0.1}, {3, 1.5, 0.05}}, 1.0, {8000, 4000}, {3.0}, 8);
+  s.cumulant = true;
+  const DsmcResult r = run_ensemble(s);
+  for (std::size_t k = 0; k < 2; ++k) {
+    std::printf("elastic binary species %zu: T - 1 = %.2e (z %.2f), c = %.4f (z %.2f)\n", k + 1, r.T.mean[k] - 1,
+                (r.T.mean[k] - 1) / r.T.err[k], r.cumulant.mean[k], r.cumulant.mean[k] / r.cumulant.err[k]);
+    CHECK(std::abs(r.T.mean[k] - 1) < 4 * r.T.err[k]);  // equal start, no dissipation: no drift
+    CHECK(std::abs(r.cumulant.mean[k]) < 4 * r.cumulant.err[k]);  // Maxwellian stays Maxwellian
+  }
+  CHECK((r.T.mean[0] * 8000 + r.T.mean[1] * 4000) / 12000 == Approx(1.0).epsilon(1e-12));  // energy conserved
+}
+
+TEST_CASE("impurity with equal temperatures (physics.md section 7) keeps T1 = T2", "[dsmc]") {
+  // x1 -> 0 with (σ12/σ22)^4 = μ(1+μ)/2: w = 2 gives μ = m1/m2 = 2.721; Maxwellian theory γ = 1.
+  DsmcSetup s = setup({{2.721, 2, 0.001}, {1, 1, 0.1}}, 0.5, {400, 40000}, {20.0, 200.0}, 8);
+  const DsmcResult r = run_ensemble(s);
+  for (std::size_t j = 0; j < 2; ++j) {
+    const double g = r.T.mean[2 * j] / r.T.mean[2 * j + 1];
+    const double err = g * std::hypot(r.T.err[2 * j] / r.T.mean[2 * j], r.T.err[2 * j + 1] / r.T.mean[2 * j + 1]);
+    std::printf("impurity t=%g: T1/T2 = %.4f +- %.4f\n", s.times[j], g, err);
+    // x1 = 0.01 shifts the Maxwellian value by ~1e-3; the first-Sonine shift is of the same order.
+    CHECK(std::abs(g - 1.0) < 4 * err + 0.005);
+  }
+}
+
+TEST_CASE("aged start: the gas cools to <T> = 1 and the measurement starts there", "[dsmc]") {
+  DsmcSetup s = setup({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.001}}, 0.5, {20000, 200}, {1e-9, 1.0}, 8);
+  s.T0 = {100.0, 100.0};
+  s.aged = true;
+  s.msd = true;
+  const DsmcResult r = run_ensemble(s);
+  const double mean = (20000 * r.T.mean[0] + 200 * r.T.mean[1]) / 20200;
+  CHECK(mean == Approx(1.0).margin(1e-3));  // stops within one collision's loss: O(1/N)
+  CHECK(r.msd.mean[0] < 1e-15);             // displacements were reset at the start
+  CHECK(r.pair_collisions.mean[0] < 100);   // so were the collision counts (1e-9 after the reset)
+  const theory::CollisionRates rates(s.mixture, s.law, model::dilute_contact_values(2));
+  model::InitialState aged;
+  aged.kind = model::InitialState::Kind::aged;
+  aged.T_hot = 100.0;
+  const std::vector<double> T = theory::initial_temperatures(aged, rates);
+  const double ratio = r.T.mean[1] / r.T.mean[0];
+  std::printf("aged start: T2/T1 = %.3f, Maxwellian theory %.3f (rel %.3f)\n", ratio, T[1] / T[0], ratio / (T[1] / T[0]) - 1);
+  // The ratio is still in its transient (see the theory test), where the Maxwellian closure errs
+  // more than in the settled state: measured +5%; stated model tolerance 10%.
+  CHECK(ratio == Approx(T[1] / T[0]).epsilon(0.10));
 }
