@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "event_loop.hpp"
+#include "time_step_scheme.hpp"
 #include "model/enskog.hpp"
 
 namespace granmix::dsmc {
@@ -16,6 +17,7 @@ Method parse_method(const std::string& name) {
   if (name == "direct") return Method::direct;
   if (name == "lowrank") return Method::lowrank;
   if (name == "bird") return Method::bird;
+  if (name == "timestep") return Method::timestep;
   throw std::invalid_argument("unknown DSMC method '" + name + "'");
 }
 
@@ -25,6 +27,7 @@ const char* to_string(Method m) {
     case Method::direct: return "direct";
     case Method::lowrank: return "lowrank";
     case Method::bird: return "bird";
+    case Method::timestep: return "timestep";
   }
   return "?";
 }
@@ -41,7 +44,7 @@ namespace {
 // Everything one replica records, [time * M + k].
 struct ReplicaRecord {
   std::vector<double> T, msd, cumulant, pair_collisions;
-  std::uint64_t trials = 0, accepted = 0;
+  std::uint64_t trials = 0, accepted = 0, steps = 0;
 };
 
 void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c, ReplicaRecord& out) {
@@ -86,6 +89,21 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   return out;
 }
 
+ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, std::size_t r) {
+  if (s.aged) throw std::invalid_argument("DSMC: the timestep method has no aged start");
+  Rng rng(s.seed, r);
+  Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd, s.rescale, rng);
+  Counters c;
+  TimeStepScheme scheme(p, pairs, s.law, rng, c, s.time_step_factor);
+  ReplicaRecord out;
+  for (double t : s.times) {
+    scheme.run_until(t);
+    sample(p, t, s, c, out);
+  }
+  out.trials = c.trials, out.accepted = c.accepted, out.steps = scheme.steps();
+  return out;
+}
+
 Estimate reduce(const std::vector<ReplicaRecord>& recs, std::vector<double> ReplicaRecord::*field) {
   Estimate e;
   const std::size_t n = (recs.front().*field).size(), R = recs.size();
@@ -125,6 +143,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
       switch (method) {
         case Method::direct: recs[r] = run_replica<DirectSelector>(s, pairs, r); break;
         case Method::lowrank: recs[r] = run_replica<LowRankSelector>(s, pairs, r); break;
+        case Method::timestep: recs[r] = run_time_step_replica(s, pairs, r); break;
         default: recs[r] = run_replica<BirdSelector>(s, pairs, r); break;
       }
     } catch (...) {
@@ -144,7 +163,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   if (s.msd) out.msd = reduce(recs, &ReplicaRecord::msd);
   if (s.cumulant) out.cumulant = reduce(recs, &ReplicaRecord::cumulant);
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
-  for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted;
+  for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
   return out;
 }
 

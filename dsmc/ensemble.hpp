@@ -13,7 +13,7 @@
 
 namespace granmix::dsmc {
 
-enum class Method { automatic, direct, lowrank, bird };
+enum class Method { automatic, direct, lowrank, bird, timestep };
 Method parse_method(const std::string& name);  // throws std::invalid_argument
 const char* to_string(Method m);
 
@@ -29,6 +29,7 @@ struct DsmcSetup {
   // Aged start (v1 Fig. 3 dashed): T0 is the hot start; the gas cools until ⟨T⟩ = 1, then the
   // clock, displacements and collision counts are reset and the measurement begins.
   bool aged = false;
+  double time_step_factor = 3e-3;  // timestep method: Δt = factor λ11/v01(t) (MG Sec. 3)
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores
@@ -44,7 +45,7 @@ struct DsmcResult {
   std::size_t species = 0, times = 0, replicas = 0, particles = 0;
   Estimate T, msd, cumulant;     // [time * M + k]
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
-  std::uint64_t trials = 0, accepted = 0;
+  std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble
   double volume = 0.0;
   double acceptance() const { return trials ? double(accepted) / double(trials) : 0.0; }

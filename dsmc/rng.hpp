@@ -41,6 +41,12 @@ class Rng {
   // Exponential waiting time of a Poisson process of the given rate.
   double exponential(double rate) { return -std::log(uniform_open0()) / rate; }
 
+  // Unit vector uniform on the sphere (Archimedes: z uniform in [-1, 1]).
+  Vec3 unit_vector() {
+    const double z = 2.0 * uniform() - 1.0, r = std::sqrt(1.0 - z * z), phi = 2.0 * std::numbers::pi * uniform();
+    return {r * std::cos(phi), r * std::sin(phi), z};
+  }
+
   // Unit vector e around the unit vector n with density ∝ (n·e) on the hemisphere n·e > 0:
   // cos θ = √u, the distribution of collision directions weighted by the normal speed.
   Vec3 hemisphere(const Vec3& n) {

@@ -99,6 +99,9 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.T0 = d.aged ? std::vector<double>(s.mixture.size(), s.initial.T_hot) : theory::initial_temperatures(s.initial, rates);
   d.times = s.times;
   d.method = parse_method(s.dsmc.method);
+  d.time_step_factor = s.dsmc.time_step;
+  if (d.method == Method::timestep && d.aged)
+    throw InputError(s.file + ": dsmc.method = \"timestep\" has no aged start (allowed: auto, direct, lowrank, bird)");
   d.msd = s.observables.msd;
   d.cumulant = s.observables.cumulant;
   d.rescale = s.dsmc.rescale;

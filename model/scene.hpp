@@ -46,7 +46,8 @@ struct DsmcFidelity {
 
 struct DsmcSettings {
   bool present = false;
-  std::string method = "auto";  // auto | direct | lowrank | bird
+  std::string method = "auto";  // auto | direct | lowrank | bird | timestep
+  double time_step = 3e-3;      // timestep: Δt = time_step λ11/v01(t) (MG Sec. 3)
   bool rescale = true;          // scale initial velocities to exactly T_k(0)
   DsmcFidelity quick, paper;
 };
