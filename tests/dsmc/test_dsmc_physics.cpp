@@ -13,6 +13,7 @@
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/temperature_history.hpp"
+#include "theory/temperature_history.hpp"
 
 using namespace granmix;
 using namespace granmix::dsmc;
@@ -235,5 +236,22 @@ TEST_CASE("time-step scheme (MG Sec. 3) agrees with the event-driven loop for ev
                 static_cast<unsigned long long>(ts.steps / 8), ts.cumulant.mean[0], ed.cumulant.mean[0], zc, zT);
     CHECK(std::abs(zc) < 4);
     CHECK(std::abs(zT) < 4);
+  }
+}
+
+TEST_CASE("viscoelastic one-species gas: DSMC with the exact contact law follows the theory", "[dsmc]") {
+  DsmcSetup s = setup({{1, 1, 0.1}}, 1.0, {10000}, {10.0, 300.0}, 8);
+  s.law = model::Restitution::viscoelastic(s.mixture, 0.09, model::ViscoelasticForm::exact);
+  const DsmcResult r = run_ensemble(s);
+  const theory::CollisionRates rates(s.mixture, s.law, model::dilute_contact_values(1));
+  const theory::TemperatureHistory h(rates, {1.0}, 300.0);
+  for (std::size_t j = 0; j < 2; ++j) {
+    const double th = h.temperature(s.times[j], 0);
+    std::printf("viscoelastic t=%g: T = %.5f +- %.5f, theory (exact eps quadrature) %.5f, rel %.4f\n", s.times[j], r.T.mean[j],
+                r.T.err[j], th, r.T.mean[j] / th - 1);
+    // Theory closes the collision integral with Maxwellians; DSMC does not. Measured +0.2% at
+    // t = 10 and +0.7% at t = 300 (the non-Maxwellian correction grows as the gas cools and ε(g)
+    // spreads). Stated model tolerance 1% plus 4σ.
+    CHECK(std::abs(r.T.mean[j] - th) < 4 * r.T.err[j] + 1e-2 * th);
   }
 }
