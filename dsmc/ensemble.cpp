@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "event_loop.hpp"
@@ -43,7 +44,7 @@ namespace {
 
 // Everything one replica records, [time * M + k].
 struct ReplicaRecord {
-  std::vector<double> T, msd, cumulant, pair_collisions;
+  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time;
   std::uint64_t trials = 0, accepted = 0, steps = 0;
 };
 
@@ -84,6 +85,7 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   for (double t : s.times) {
     loop.run_until(t);
     sample(p, t, s, c, out);
+    out.rescaled_time.push_back(loop.rescaled_time());
   }
   out.trials = c.trials, out.accepted = c.accepted;
   return out;
@@ -99,6 +101,7 @@ ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, 
   for (double t : s.times) {
     scheme.run_until(t);
     sample(p, t, s, c, out);
+    out.rescaled_time.push_back(std::numeric_limits<double>::quiet_NaN());  // not tracked by the scheme
   }
   out.trials = c.trials, out.accepted = c.accepted, out.steps = scheme.steps();
   return out;
@@ -163,6 +166,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   if (s.msd) out.msd = reduce(recs, &ReplicaRecord::msd);
   if (s.cumulant) out.cumulant = reduce(recs, &ReplicaRecord::cumulant);
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
+  out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
   for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
   return out;
 }

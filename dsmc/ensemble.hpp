@@ -44,6 +44,7 @@ struct DsmcResult {
   Method method = Method::direct;
   std::size_t species = 0, times = 0, replicas = 0, particles = 0;
   Estimate T, msd, cumulant;     // [time * M + k]
+  Estimate rescaled_time;        // [time]: t_s = ∫ √(T_1/T_1(0)) dt (event-driven methods; NaN for timestep)
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble

@@ -20,21 +20,22 @@ struct Counters {
   std::vector<std::uint64_t> pair_collisions;  // [i*M + k], i <= k
 };
 
-// Total kinetic energy Σ m v²/2.
-double kinetic_energy(const Particles& p);
-
 template <class Selector>
 class EventLoop {
  public:
   // Maximum speeds are raised at every collision and recomputed from the particles every
   // refresh_every accepted collisions, so that the acceptance does not decay as the gas cools.
   EventLoop(Particles& p, Selector& sel, const model::Restitution& law, Rng& rng, Counters& c, std::uint64_t refresh_every)
-      : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every), energy_(kinetic_energy(p)) {
+      : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every), energy_(kinetic_energy(p)),
+        e1_(species_energy(p, 0)), e1_start_(e1_) {
     c_.pair_collisions.assign(p.species() * p.species(), 0);
   }
 
   double time() const { return t_; }
   double energy() const { return energy_; }
+  // Rescaled time t_s = ∫₀ᵗ √(T_1/T_1(0)) dt' (v1 Fig. 1), exact: T_1 is constant between the
+  // collisions of species 1.
+  double rescaled_time() const { return ts_ + std::sqrt(e1_ / e1_start_) * (t_ - t_e1_); }
 
   // Advance to t_stop. The Poisson process is memoryless: the waiting time that would cross
   // t_stop is discarded and a fresh one drawn on the next call.
@@ -47,6 +48,7 @@ class EventLoop {
   // Start the measurement here: t = 0, displacements and collision counts zero (v1 Fig. 3 dashed).
   void reset_clock() {
     t_ = 0.0;
+    ts_ = 0.0, t_e1_ = 0.0, e1_start_ = e1_;
     if (p_.track_displacement)
       for (std::size_t a = 0; a < p_.size(); ++a) p_.rx[a] = p_.ry[a] = p_.rz[a] = p_.t_last[a] = 0.0;
     std::fill(c_.pair_collisions.begin(), c_.pair_collisions.end(), 0);
@@ -72,7 +74,10 @@ class EventLoop {
       const double eps = law_.eps_at(q.i, q.k, g_dot_e);
       const double ma = p_.mass[q.i], mb = p_.mass[q.k];
       if (p_.track_displacement) advance_displacement(p_, q.a, t_), advance_displacement(p_, q.b, t_);
+      const bool species1 = q.i == 0 || q.k == 0;
+      if (species1) ts_ = rescaled_time(), t_e1_ = t_, e1_ -= species1_energy(q);
       collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e);
+      if (species1) e1_ += species1_energy(q);
       energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
       ++c_.accepted;
       ++c_.pair_collisions[q.i <= q.k ? q.i * p_.species() + q.k : q.k * p_.species() + q.i];
@@ -81,10 +86,17 @@ class EventLoop {
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
         energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
+        e1_ = species_energy(p_, 0);
         since_refresh_ = 0;
         ++c_.refreshes;
       }
     }
+  }
+
+  // Kinetic energy that the particles of species 1 in proposal q carry.
+  double species1_energy(const Proposal& q) const {
+    auto e = [&](std::size_t a) { return 0.5 * p_.mass[0] * (p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); };
+    return (q.i == 0 ? e(q.a) : 0.0) + (q.k == 0 ? e(q.b) : 0.0);
   }
 
   double speed(std::size_t a) const { return std::sqrt(p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); }
@@ -97,6 +109,8 @@ class EventLoop {
   std::uint64_t refresh_every_, since_refresh_ = 0;
   double t_ = 0.0;
   double energy_;
+  double e1_, e1_start_;           // kinetic energy of species 1, now and at the clock's start
+  double ts_ = 0.0, t_e1_ = 0.0;  // t_s accumulated up to t_e1_, the last change of e1_
 };
 
 }  // namespace granmix::dsmc

@@ -41,9 +41,7 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
 }
 
 double species_temperature(const Particles& p, std::size_t k) {
-  double s = 0.0;
-  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
-  return p.mass[k] * s / (3.0 * static_cast<double>(p.count(k)));
+  return 2.0 * species_energy(p, k) / (3.0 * static_cast<double>(p.count(k)));  // T_k = m_k ⟨v²⟩/3
 }
 
 double speed_max(const Particles& p, std::size_t k) {
@@ -56,13 +54,15 @@ double speed_max(const Particles& p, std::size_t k) {
 
 namespace granmix::dsmc {
 
+double species_energy(const Particles& p, std::size_t k) {
+  double s = 0.0;
+  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
+  return 0.5 * p.mass[k] * s;
+}
+
 double kinetic_energy(const Particles& p) {
   double e = 0.0;
-  for (std::size_t k = 0; k < p.species(); ++k) {
-    double s = 0.0;
-    for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
-    e += 0.5 * p.mass[k] * s;
-  }
+  for (std::size_t k = 0; k < p.species(); ++k) e += species_energy(p, k);
   return e;
 }
 

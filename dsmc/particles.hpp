@@ -29,8 +29,10 @@ struct Particles {
 Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std::size_t>& counts,
                                const std::vector<double>& T, bool track_displacement, bool rescale, Rng& rng);
 
-// T_k = m_k ⟨v²⟩ / 3 of one species.
+// T_k = m_k ⟨v²⟩ / 3 of one species; kinetic energies Σ m v²/2 of one species and of all.
 double species_temperature(const Particles& p, std::size_t k);
+double species_energy(const Particles& p, std::size_t k);
+double kinetic_energy(const Particles& p);
 double speed_max(const Particles& p, std::size_t k);
 
 }  // namespace granmix::dsmc

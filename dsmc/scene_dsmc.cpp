@@ -32,6 +32,7 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
   Table t;
   t.columns = {"t", "species"};
   auto add = [&](const char* name) { t.columns.push_back(name), t.columns.push_back(std::string(name) + "_err"); };
+  if (o.rescaled_time) add("t_s");
   if (o.temperatures) add("T");
   if (o.msd) add("msd");
   if (o.cumulant) add("c");
@@ -47,6 +48,7 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
         return weighted(s.mixture, e, j);
       };
       auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
+      if (o.rescaled_time) push({r.rescaled_time.mean[j], r.rescaled_time.err[j]});
       if (o.temperatures) push(species_value(r.T));
       if (o.msd) push(species_value(r.msd));
       if (o.cumulant) push(k > 0 ? species_value(r.cumulant) : std::pair{nan, nan});
@@ -81,8 +83,8 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
                        const std::function<void(std::size_t, std::size_t)>& progress) {
   if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
   if (s.theory.sweep) throw InputError(s.file + ": a sweep scene is theory only (no [dsmc] time series)");
-  if (s.observables.tamsd || s.observables.d_ratio || s.observables.rescaled_time)
-    throw InputError(s.file + ": DSMC does not measure tamsd, d_ratio or rescaled_time yet");
+  if (s.observables.tamsd || s.observables.d_ratio)
+    throw InputError(s.file + ": DSMC does not measure tamsd or d_ratio yet (allowed: temperatures, msd, cumulant, gamma, rescaled_time)");
   const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
   DsmcRun run;
   DsmcSetup& d = run.setup;

@@ -255,3 +255,20 @@ TEST_CASE("viscoelastic one-species gas: DSMC with the exact contact law follows
     CHECK(std::abs(r.T.mean[j] - th) < 4 * r.T.err[j] + 1e-2 * th);
   }
 }
+
+TEST_CASE("rescaled time t_s: equal to t in an elastic gas and tau0 ln(1 + t/tau0) under Haff's law", "[dsmc]") {
+  DsmcSetup elastic = setup({{1, 1, 0.1}}, 1.0, {2000}, {5.0}, 2);
+  const DsmcResult a = run_ensemble(elastic);
+  CHECK(a.rescaled_time.mean[0] == Approx(5.0).epsilon(1e-12));  // T_1 never changes: rounding only
+  const double e = 0.9;
+  DsmcSetup s = setup({{1, 1, 0.1}}, e, {20000}, {50.0, 200.0}, 8);
+  const DsmcResult r = run_ensemble(s);
+  const double c = 32 * (1 - e) * (1 - 2 * e * e) / (81 - 17 * e + 30 * e * e * (1 - e));
+  const double tau0 = 3 / (2 * std::sqrt(pi) * (1 - e * e) * 0.1) / (1 + 3 * c / 32);  // as in the Haff test
+  for (std::size_t j = 0; j < 2; ++j) {
+    const double th = tau0 * std::log1p(s.times[j] / tau0);
+    std::printf("t_s at t = %g: %.5f +- %.5f, Sonine-Haff %.5f\n", s.times[j], r.rescaled_time.mean[j], r.rescaled_time.err[j], th);
+    // Same model tolerance as the Haff test (0.3%: the a₂ transient), plus 4σ.
+    CHECK(std::abs(r.rescaled_time.mean[j] - th) < 4 * r.rescaled_time.err[j] + 3e-3 * th);
+  }
+}
