@@ -2,6 +2,7 @@
 
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -44,7 +45,7 @@ namespace {
 
 // Everything one replica records, [time * M + k].
 struct ReplicaRecord {
-  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time;
+  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time, tamsd;
   std::uint64_t trials = 0, accepted = 0, steps = 0;
 };
 
@@ -55,10 +56,9 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
     for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
       const double w = p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
       v2 += w, v4 += w * w;
-      if (s.msd) {  // v1 Eq. (15): add the free flight since the last collision, state untouched
-        const double dt = t - p.t_last[j];
-        const double x = p.rx[j] + p.vx[j] * dt, y = p.ry[j] + p.vy[j] * dt, z = p.rz[j] + p.vz[j] * dt;
-        r2 += x * x + y * y + z * z;
+      if (s.msd) {
+        const Vec3 r = displacement(p, j, t);
+        r2 += r.x * r.x + r.y * r.y + r.z * r.z;
       }
     }
     const double n = double(p.count(k));
@@ -70,10 +70,34 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
   for (std::uint64_t v : c.pair_collisions) out.pair_collisions.push_back(double(v));
 }
 
+// The stops of one replica in time order: samples, TAMSD starts (record tracer positions) and
+// TAMSD ends (accumulate squared increments).
+struct Stop {
+  double t;
+  enum Kind { start, end, sample } kind;
+  std::size_t index, lag;
+};
+
+std::vector<Stop> schedule(const DsmcSetup& s, std::size_t starts) {
+  std::vector<Stop> stops;
+  for (std::size_t j = 0; j < s.times.size(); ++j) stops.push_back({s.times[j], Stop::sample, j, 0});
+  if (s.tamsd_measurement_time > 0.0) {
+    const double delta = s.tamsd_measurement_time / double(starts);
+    for (std::size_t g = 0; g < starts; ++g) {
+      stops.push_back({g * delta, Stop::start, g, 0});
+      for (std::size_t l = 0; l < s.tamsd_lags.size(); ++l)
+        if (g * delta + s.tamsd_lags[l] <= s.tamsd_measurement_time) stops.push_back({g * delta + s.tamsd_lags[l], Stop::end, g, l});
+    }
+  }
+  std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
+  return stops;
+}
+
 template <class Selector>
 ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_t r) {
   Rng rng(s.seed, r);
-  Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd, s.rescale, rng);
+  const bool tamsd = s.tamsd_measurement_time > 0.0;
+  Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd || tamsd, s.rescale, rng);
   Selector sel(pairs, p);
   Counters c;
   EventLoop<Selector> loop(p, sel, s.law, rng, c, p.size());
@@ -81,18 +105,40 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
     loop.cool_to(1.5 * double(p.size()));  // ⟨T⟩ = 2E/(3N) = 1
     loop.reset_clock();
   }
+  constexpr std::size_t starts = 512;
+  const std::size_t M = p.species(), L = s.tamsd_lags.size();
+  // Tracers: the first K particles of each species (initial velocities are i.i.d., so any K will do).
+  std::vector<std::size_t> tracers(M);
+  for (std::size_t k = 0; k < M; ++k) tracers[k] = std::min(s.tamsd_tracers, p.count(k));
+  std::vector<std::vector<Vec3>> at_start(tamsd ? starts : 0);
+  std::vector<double> sum(L * M, 0.0), count(L * M, 0.0);
   ReplicaRecord out;
-  for (double t : s.times) {
-    loop.run_until(t);
-    sample(p, t, s, c, out);
-    out.rescaled_time.push_back(loop.rescaled_time());
+  for (const Stop& stop : schedule(s, starts)) {
+    loop.run_until(stop.t);
+    if (stop.kind == Stop::sample) {
+      sample(p, stop.t, s, c, out);
+      out.rescaled_time.push_back(loop.rescaled_time());
+    } else if (stop.kind == Stop::start) {
+      for (std::size_t k = 0; k < M; ++k)
+        for (std::size_t j = 0; j < tracers[k]; ++j) at_start[stop.index].push_back(displacement(p, p.begin(k) + j, stop.t));
+    } else {
+      std::size_t n = 0;
+      for (std::size_t k = 0; k < M; ++k)
+        for (std::size_t j = 0; j < tracers[k]; ++j, ++n) {
+          const Vec3 a = at_start[stop.index][n], b = displacement(p, p.begin(k) + j, stop.t);
+          sum[stop.lag * M + k] += (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y) + (b.z - a.z) * (b.z - a.z);
+          count[stop.lag * M + k] += 1.0;
+        }
+    }
   }
+  for (std::size_t i = 0; i < sum.size(); ++i) out.tamsd.push_back(sum[i] / count[i]);
   out.trials = c.trials, out.accepted = c.accepted;
   return out;
 }
 
 ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, std::size_t r) {
-  if (s.aged) throw std::invalid_argument("DSMC: the timestep method has no aged start");
+  if (s.aged || s.tamsd_measurement_time > 0.0)
+    throw std::invalid_argument("DSMC: the timestep method has no aged start and no TAMSD");
   Rng rng(s.seed, r);
   Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd, s.rescale, rng);
   Counters c;
@@ -167,6 +213,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   if (s.cumulant) out.cumulant = reduce(recs, &ReplicaRecord::cumulant);
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
   out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
+  if (s.tamsd_measurement_time > 0.0) out.tamsd = reduce(recs, &ReplicaRecord::tamsd);
   for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
   return out;
 }

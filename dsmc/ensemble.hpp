@@ -30,6 +30,11 @@ struct DsmcSetup {
   // clock, displacements and collision counts are reset and the measurement begins.
   bool aged = false;
   double time_step_factor = 3e-3;  // timestep method: Δt = factor λ11/v01(t) (MG Sec. 3)
+  // Time-averaged MSD (physics.md §4) of `tamsd_tracers` particles per species over [0, 𝒯]: for
+  // each lag, [R(t+Δ) − R(t)]² averaged over 512 uniformly spaced starts t <= 𝒯 − Δ and the tracers.
+  double tamsd_measurement_time = 0.0;  // 𝒯; 0: no TAMSD
+  std::vector<double> tamsd_lags;
+  std::size_t tamsd_tracers = 100;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores
@@ -45,6 +50,7 @@ struct DsmcResult {
   std::size_t species = 0, times = 0, replicas = 0, particles = 0;
   Estimate T, msd, cumulant;     // [time * M + k]
   Estimate rescaled_time;        // [time]: t_s = ∫ √(T_1/T_1(0)) dt (event-driven methods; NaN for timestep)
+  Estimate tamsd;                // [lag * M + k]
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble

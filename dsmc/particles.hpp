@@ -29,6 +29,12 @@ struct Particles {
 Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std::size_t>& counts,
                                const std::vector<double>& T, bool track_displacement, bool rescale, Rng& rng);
 
+// Displacement of particle a at time t without touching the state (v1 Eq. 15).
+inline Vec3 displacement(const Particles& p, std::size_t a, double t) {
+  const double dt = t - p.t_last[a];
+  return {p.rx[a] + p.vx[a] * dt, p.ry[a] + p.vy[a] * dt, p.rz[a] + p.vz[a] * dt};
+}
+
 // T_k = m_k ⟨v²⟩ / 3 of one species; kinetic energies Σ m v²/2 of one species and of all.
 double species_temperature(const Particles& p, std::size_t k);
 double species_energy(const Particles& p, std::size_t k);

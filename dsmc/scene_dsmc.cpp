@@ -37,6 +37,7 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
   if (o.msd) add("msd");
   if (o.cumulant) add("c");
   if (o.gamma) add("gamma");
+  if (o.tamsd) t.columns.push_back("lag"), add("tamsd");
   add("collisions");
   const double nan = Table::missing;
   for (std::size_t j = 0; j < setup.times.size(); ++j) {
@@ -59,6 +60,10 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
         } else {
           push({nan, nan});
         }
+      }
+      if (o.tamsd) {
+        row.push_back(setup.times[j]);  // lags are the time grid (as in theory.tsv)
+        push(k > 0 ? std::pair{r.tamsd.mean[j * M + k - 1], r.tamsd.err[j * M + k - 1]} : std::pair{nan, nan});
       }
       // Collisions per particle: species k takes part in C_ik for i != k once and in C_kk twice.
       double c = 0.0, ce2 = 0.0, particles = 0.0;
@@ -83,8 +88,8 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
                        const std::function<void(std::size_t, std::size_t)>& progress) {
   if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
   if (s.theory.sweep) throw InputError(s.file + ": a sweep scene is theory only (no [dsmc] time series)");
-  if (s.observables.tamsd || s.observables.d_ratio)
-    throw InputError(s.file + ": DSMC does not measure tamsd or d_ratio yet (allowed: temperatures, msd, cumulant, gamma, rescaled_time)");
+  if (s.observables.d_ratio)
+    throw InputError(s.file + ": DSMC does not measure d_ratio (allowed: temperatures, msd, cumulant, gamma, rescaled_time, tamsd)");
   const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
   DsmcRun run;
   DsmcSetup& d = run.setup;
@@ -107,6 +112,11 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.msd = s.observables.msd;
   d.cumulant = s.observables.cumulant;
   d.rescale = s.dsmc.rescale;
+  if (s.observables.tamsd) {
+    d.tamsd_measurement_time = s.observables.tamsd_measurement_time;
+    d.tamsd_lags = s.times;
+    d.tamsd_tracers = s.observables.tamsd_tracers;
+  }
   d.seed = seed;
   d.replicas = f.replicas;
   d.threads = threads;

@@ -146,6 +146,7 @@ Observables read_observables(TomlFields& f) {
     TomlFields t = f.sub("tamsd");
     o.tamsd = true;
     o.tamsd_measurement_time = t.positive("measurement_time");
+    o.tamsd_tracers = t.count("tracers", 1, 100000, 100);
     t.finish();
   }
   if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant))

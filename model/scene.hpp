@@ -21,6 +21,7 @@ struct Observables {
   bool tamsd = false;          // columns lag, tamsd (lags = the time grid)
   bool cumulant = false;       // column c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (DSMC; theory with the Sonine solver)
   double tamsd_measurement_time = 0.0;
+  std::size_t tamsd_tracers = 100;  // DSMC: tracer particles per species
 };
 
 struct Sweep {
