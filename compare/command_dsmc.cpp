@@ -38,6 +38,8 @@ int run(const DsmcOptions& o) {
   p.fidelity = o.fidelity;
   const std::filesystem::path file = std::filesystem::path(o.out) / s.name / "dsmc.tsv";
   write_atomically(file, format_tsv(provenance_header(p), run.table));
+  if (!run.distribution.rows.empty())
+    write_atomically(file.parent_path() / "distribution.tsv", format_tsv(provenance_header(p), run.distribution));
   const dsmc::DsmcResult& r = run.result;
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);

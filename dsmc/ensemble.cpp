@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 
 #include "event_loop.hpp"
@@ -45,7 +46,7 @@ namespace {
 
 // Everything one replica records, [time * M + k].
 struct ReplicaRecord {
-  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time, tamsd;
+  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time, tamsd, distribution;
   std::uint64_t trials = 0, accepted = 0, steps = 0;
 };
 
@@ -68,6 +69,27 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
     if (s.cumulant) out.cumulant.push_back(2.0 * (0.6 * (v4 / n) / ((v2 / n) * (v2 / n)) - 1.0));
   }
   for (std::uint64_t v : c.pair_collisions) out.pair_collisions.push_back(double(v));
+  if (s.distribution_bins > 0) {
+    // MG: Φ_k(v*) = v0³ f_k(v) / n_k, estimated as count / (N_k × shell volume in v* space).
+    const std::size_t B = s.distribution_bins;
+    double T = 0.0;
+    for (std::size_t k = 0; k < M; ++k) T += double(p.count(k)) * species_temperature(p, k) / double(p.size());
+    const double m1 = p.mass[0], m2 = M > 1 ? p.mass[1] : p.mass[0];
+    const double v0 = std::sqrt(2.0 * T * (m1 + m2) / (m1 * m2)), width = s.distribution_vmax / double(B);
+    for (std::size_t k = 0; k < M; ++k) {
+      std::vector<double> h(B, 0.0);
+      for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
+        const double v = std::sqrt(p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j]) / v0;
+        const auto b = static_cast<std::size_t>(v / width);
+        if (b < B) h[b] += 1.0;
+      }
+      for (std::size_t b = 0; b < B; ++b) {
+        const double lo = b * width, hi = lo + width;
+        const double shell = 4.0 * std::numbers::pi / 3.0 * (hi * hi * hi - lo * lo * lo);
+        out.distribution.push_back(h[b] / (double(p.count(k)) * shell));
+      }
+    }
+  }
 }
 
 // The stops of one replica in time order: samples, TAMSD starts (record tracer positions) and
@@ -214,6 +236,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
   out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
   if (s.tamsd_measurement_time > 0.0) out.tamsd = reduce(recs, &ReplicaRecord::tamsd);
+  if (s.distribution_bins > 0) out.distribution = reduce(recs, &ReplicaRecord::distribution);
   for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
   return out;
 }

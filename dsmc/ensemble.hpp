@@ -35,6 +35,10 @@ struct DsmcSetup {
   double tamsd_measurement_time = 0.0;  // 𝒯; 0: no TAMSD
   std::vector<double> tamsd_lags;
   std::size_t tamsd_tracers = 100;
+  // Velocity distribution Φ_k(v*) (MG Eq. 12), v* = |v|/v0, v0² = 2T(m_1+m_2)/(m_1 m_2) with the
+  // mixture temperature T = Σ x_k T_k (MG; m_2 = m_1 for one species): `bins` shells on [0, v_max].
+  std::size_t distribution_bins = 0;  // 0: none
+  double distribution_vmax = 4.0;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores
@@ -51,6 +55,7 @@ struct DsmcResult {
   Estimate T, msd, cumulant;     // [time * M + k]
   Estimate rescaled_time;        // [time]: t_s = ∫ √(T_1/T_1(0)) dt (event-driven methods; NaN for timestep)
   Estimate tamsd;                // [lag * M + k]
+  Estimate distribution;         // [(time * M + k) * bins + b]: Φ_k at the bin centre
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble

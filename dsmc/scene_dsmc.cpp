@@ -112,6 +112,8 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.msd = s.observables.msd;
   d.cumulant = s.observables.cumulant;
   d.rescale = s.dsmc.rescale;
+  d.distribution_bins = s.observables.distribution_bins;
+  d.distribution_vmax = s.observables.distribution_vmax;
   if (s.observables.tamsd) {
     d.tamsd_measurement_time = s.observables.tamsd_measurement_time;
     d.tamsd_lags = s.times;
@@ -123,6 +125,18 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.progress = progress;
   run.result = run_ensemble(d);
   run.table = make_table(s, d, run.result);
+  if (d.distribution_bins > 0) {
+    const std::size_t M = s.mixture.size(), B = d.distribution_bins;
+    const double width = d.distribution_vmax / double(B);
+    run.distribution.columns = {"t", "species", "v", "phi", "phi_err"};
+    for (std::size_t j = 0; j < d.times.size(); ++j)
+      for (std::size_t k = 0; k < M; ++k)
+        for (std::size_t b = 0; b < B; ++b) {
+          const std::size_t idx = (j * M + k) * B + b;
+          run.distribution.rows.push_back({d.times[j], double(k + 1), (b + 0.5) * width, run.result.distribution.mean[idx],
+                                           run.result.distribution.err[idx]});
+        }
+  }
   return run;
 }
 

@@ -14,6 +14,7 @@ namespace granmix::dsmc {
 
 struct DsmcRun {
   model::Table table;
+  model::Table distribution;  // t, species, v, phi, phi_err (empty unless the scene asks for it)
   DsmcResult result;
   DsmcSetup setup;
 };

@@ -142,6 +142,12 @@ Observables read_observables(TomlFields& f) {
   o.d_ratio = f.flag("d_ratio", false);
   o.gamma = f.flag("gamma", false);
   o.cumulant = f.flag("cumulant", false);
+  if (f.has("distribution")) {
+    TomlFields d = f.sub("distribution");
+    o.distribution_bins = d.count("bins", 1, 10000, 40);
+    o.distribution_vmax = d.number("v_max", 1e-3, 100.0, 4.0);
+    d.finish();
+  }
   if (f.has("tamsd")) {
     TomlFields t = f.sub("tamsd");
     o.tamsd = true;
@@ -149,7 +155,7 @@ Observables read_observables(TomlFields& f) {
     o.tamsd_tracers = t.count("tracers", 1, 100000, 100);
     t.finish();
   }
-  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant))
+  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant || o.distribution_bins))
     f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, rescaled_time, d_ratio, gamma, tamsd, cumulant");
   return o;
 }

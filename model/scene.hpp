@@ -19,6 +19,8 @@ struct Observables {
   bool d_ratio = false;        // column D_ratio = D_k/D_1 (in time, or settled along a sweep)
   bool gamma = false;          // column gamma = T_1/T_2 (species 0 row)
   bool tamsd = false;          // columns lag, tamsd (lags = the time grid)
+  std::size_t distribution_bins = 0;  // DSMC: Φ_k(v*) histogram -> distribution.tsv (0: none)
+  double distribution_vmax = 4.0;
   bool cumulant = false;       // column c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (DSMC; theory with the Sonine solver)
   double tamsd_measurement_time = 0.0;
   std::size_t tamsd_tracers = 100;  // DSMC: tracer particles per species

@@ -272,3 +272,20 @@ TEST_CASE("rescaled time t_s: equal to t in an elastic gas and tau0 ln(1 + t/tau
     CHECK(std::abs(r.rescaled_time.mean[j] - th) < 4 * r.rescaled_time.err[j] + 3e-3 * th);
   }
 }
+
+TEST_CASE("velocity distribution of an elastic gas is the Maxwellian in MG units", "[dsmc]") {
+  DsmcSetup s = setup({{1, 1, 0.1}}, 1.0, {20000}, {2.0}, 8);
+  s.distribution_bins = 32, s.distribution_vmax = 3.2;
+  const DsmcResult r = run_ensemble(s);
+  // One species: v0² = 2T(m+m)/m² = 4T/m, so Φ(v*) = (2/π)^(3/2) exp(−2v*²); the exact mean over a
+  // shell uses the Maxwellian CDF F(x) = erf(√2 x) − 2√(2/π) x exp(−2x²).
+  auto F = [](double x) { return std::erf(std::sqrt(2.0) * x) - 2.0 * std::sqrt(2.0 / pi) * x * std::exp(-2.0 * x * x); };
+  double worst = 0.0;
+  for (std::size_t b = 0; b < 32; ++b) {
+    const double lo = 0.1 * b, hi = lo + 0.1, shell = 4.0 * pi / 3.0 * (hi * hi * hi - lo * lo * lo);
+    const double expect = (F(hi) - F(lo)) / shell;
+    if (r.distribution.err[b] > 0) worst = std::max(worst, std::abs(r.distribution.mean[b] - expect) / r.distribution.err[b]);
+  }
+  std::printf("elastic distribution: max |z| over 32 bins = %.2f\n", worst);
+  CHECK(worst < 4.5);  // 32 comparisons: 4.5 keeps a false alarm below 1e-3
+}
