@@ -48,7 +48,16 @@ namespace {
 struct ReplicaRecord {
   std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time, tamsd, distribution;
   std::uint64_t trials = 0, accepted = 0, steps = 0;
+  double seconds_setup = 0.0, seconds_loop = 0.0, seconds_sample = 0.0;
 };
+
+// Seconds since `since`, and restart it.
+double lap(std::chrono::steady_clock::time_point& since) {
+  const auto now = std::chrono::steady_clock::now();
+  const double s = std::chrono::duration<double>(now - since).count();
+  since = now;
+  return s;
+}
 
 void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c, ReplicaRecord& out) {
   const std::size_t M = p.species();
@@ -117,6 +126,8 @@ std::vector<Stop> schedule(const DsmcSetup& s, std::size_t starts) {
 
 template <class Selector>
 ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_t r) {
+  auto clock = std::chrono::steady_clock::now();
+  ReplicaRecord out;
   Rng rng(s.seed, r);
   const bool tamsd = s.tamsd_measurement_time > 0.0;
   Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd || tamsd, s.rescale, rng);
@@ -134,9 +145,10 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   for (std::size_t k = 0; k < M; ++k) tracers[k] = std::min(s.tamsd_tracers, p.count(k));
   std::vector<std::vector<Vec3>> at_start(tamsd ? starts : 0);
   std::vector<double> sum(L * M, 0.0), count(L * M, 0.0);
-  ReplicaRecord out;
+  out.seconds_setup += lap(clock);
   for (const Stop& stop : schedule(s, starts)) {
     loop.run_until(stop.t);
+    out.seconds_loop += lap(clock);
     if (stop.kind == Stop::sample) {
       sample(p, stop.t, s, c, out);
       out.rescaled_time.push_back(loop.rescaled_time());
@@ -152,6 +164,7 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
           count[stop.lag * M + k] += 1.0;
         }
     }
+    out.seconds_sample += lap(clock);
   }
   for (std::size_t i = 0; i < sum.size(); ++i) out.tamsd.push_back(sum[i] / count[i]);
   out.trials = c.trials, out.accepted = c.accepted;
@@ -237,7 +250,10 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
   if (s.tamsd_measurement_time > 0.0) out.tamsd = reduce(recs, &ReplicaRecord::tamsd);
   if (s.distribution_bins > 0) out.distribution = reduce(recs, &ReplicaRecord::distribution);
-  for (const auto& r : recs) out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
+  for (const auto& r : recs) {
+    out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
+    out.seconds_setup += r.seconds_setup, out.seconds_loop += r.seconds_loop, out.seconds_sample += r.seconds_sample;
+  }
   return out;
 }
 

@@ -59,6 +59,10 @@ struct DsmcResult {
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble
+  // CPU time by phase, summed over replicas: particle set-up (and aging), the event loop (pair
+  // selection and collisions together: timing them apart would put a clock read on every event),
+  // and sampling of observables.
+  double seconds_setup = 0.0, seconds_loop = 0.0, seconds_sample = 0.0;
   double volume = 0.0;
   double acceptance() const { return trials ? double(accepted) / double(trials) : 0.0; }
   double collisions_per_second() const { return seconds > 0 ? double(accepted) / seconds : 0.0; }
