@@ -1,8 +1,9 @@
 // granmix hcs: the settled (HCS) state of a mixture (design.md §3), in two forms:
 //   --mass m1,m2,… --diameter … --density … --eps E [--nstar N] [--json]
 //   --mu μ --delta δ --w w --alpha α [--alpha11 --alpha22 --alpha12] [--nstar N] [--json]
-// Fields this build computes: T_ratio_maxwell (v1 Eq. A2), D_ratio (v1 Eq. 19), tau0 = 2/ξ at
-// ⟨T⟩ = 1. The first-Sonine fields come with the Sonine solver; absent fields are omitted.
+// Fields: T_ratio_maxwell (v1 Eq. A2), T_ratio_sonine and c (first-Sonine, MG App. A, any number of
+// species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), tau0 = 2/ξ at ⟨T⟩ = 1,
+// zeta_star in MG units. Fields that cannot be computed are omitted, never filled.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -13,6 +14,7 @@
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
 #include "theory/diffusion.hpp"
+#include "theory/sonine_hcs.hpp"
 
 namespace granmix::compare {
 
@@ -68,23 +70,31 @@ int run(const HcsOptions& o) {
   const model::Mixture mix = listed ? listed_mixture(o) : model::montanero_garzo_binary(o.mu, o.delta, o.w, o.nstar);
   const model::Restitution law = listed ? model::Restitution::constant(mix.size(), o.eps) : mg_restitution(o);
   auto chi = o.nstar > 0 ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
-  const theory::CollisionRates rates(mix, law, std::move(chi));
+  const theory::CollisionRates rates(mix, law, chi);
   const theory::SettledDiffusion d = theory::settled_diffusion(rates);
+  const theory::SonineHcs sonine = theory::sonine_hcs(mix, law, chi);
   // τ₀ needs an absolute density: it is omitted for the dilute MG form and for a gas that does not cool.
   const bool has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
   if (o.json) {
     nlohmann::ordered_json j;  // keys in the order of design.md §3
     j["species"] = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < mix.size(); ++k)
-      j["species"].push_back(nlohmann::ordered_json{{"T_ratio_maxwell", d.T[k] / d.T[0]}, {"D_ratio", d.D_ratio[k]}});
+      j["species"].push_back(nlohmann::ordered_json{{"T_ratio_maxwell", d.T[k] / d.T[0]},
+                                                    {"T_ratio_sonine", sonine.T[k] / sonine.T[0]},
+                                                    {"c", sonine.c[k]},
+                                                    {"D_ratio", d.D_ratio[k]},
+                                                    {"tail_exponent", sonine.tail_exponent(k)}});
     if (has_tau0) j["tau0"] = d.tau0;
+    j["zeta_star"] = sonine.zeta_star;
     std::printf("%s\n", j.dump().c_str());
     return 0;
   }
-  std::printf("%-8s %-14s %-14s %-14s %-22s %-22s\n", "species", "mass", "diameter", "density", "T_ratio_maxwell", "D_ratio");
+  std::printf("%-8s %-12s %-12s %-12s %-21s %-21s %-21s %-21s %-12s\n", "species", "mass", "diameter", "density",
+              "T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent");
   for (std::size_t k = 0; k < mix.size(); ++k)
-    std::printf("%-8zu %-14.8g %-14.8g %-14.8g %-22.17g %-22.17g\n", k + 1, mix[k].mass, mix[k].diameter, mix[k].density,
-                d.T[k] / d.T[0], d.D_ratio[k]);
+    std::printf("%-8zu %-12.8g %-12.8g %-12.8g %-21.17g %-21.17g %-21.17g %-21.17g %-12.8g\n", k + 1, mix[k].mass, mix[k].diameter,
+                mix[k].density, d.T[k] / d.T[0], sonine.T[k] / sonine.T[0], sonine.c[k], d.D_ratio[k], sonine.tail_exponent(k));
+  std::printf("zeta_star = %.17g   (first-Sonine reduced cooling rate, MG units n sigma12^2 v0)\n", sonine.zeta_star);
   if (has_tau0)
     std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);
   else

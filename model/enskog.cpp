@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
 namespace granmix::model {
 
@@ -14,7 +15,12 @@ double packing_fraction(const Mixture& mix) {
 
 std::vector<std::vector<double>> enskog_contact_values(const Mixture& mix) {
   const double nu = packing_fraction(mix);
-  if (!(nu < 1.0)) throw std::invalid_argument("Enskog: packing fraction must be below 1");
+  // Carnahan–Starling describes the fluid; above ν ≈ 0.5 hard spheres freeze and the contact values
+  // (and the Enskog theory built on them) lose their meaning.
+  if (!(nu < max_packing_fraction))
+    throw std::invalid_argument("Enskog: packing fraction " + std::to_string(nu) + " is not below " +
+                                std::to_string(max_packing_fraction) +
+                                ", the fluid range of the Carnahan-Starling contact values (MG Eq. 26)");
   double xi = 0.0;  // ξ = (π/6) Σ n_i σ_i²
   for (const Species& s : mix.species()) xi += s.density * s.diameter * s.diameter;
   xi *= std::numbers::pi / 6.0;

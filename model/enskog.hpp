@@ -6,7 +6,11 @@
 
 namespace granmix::model {
 
-// χ_ij for every pair; all ones in the dilute (Boltzmann) limit.
+// Largest packing fraction accepted: the fluid range of the Carnahan–Starling form.
+inline constexpr double max_packing_fraction = 0.5;
+
+// χ_ij for every pair; all ones in the dilute (Boltzmann) limit. Throws std::invalid_argument
+// (naming the limit) for ν >= max_packing_fraction.
 std::vector<std::vector<double>> enskog_contact_values(const Mixture& mix);
 std::vector<std::vector<double>> dilute_contact_values(std::size_t species);
 

@@ -10,6 +10,7 @@
 #include "model/mixture_generators.hpp"
 #include "run_cli.hpp"
 #include "theory/diffusion.hpp"
+#include "theory/sonine_hcs.hpp"
 
 using namespace granmix;
 
@@ -97,7 +98,15 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   CHECK(j["species"][1]["T_ratio_maxwell"].get<double>() == Approx(d.T[1] / d.T[0]).epsilon(1e-14));
   CHECK(j["species"][1]["D_ratio"].get<double>() == Approx(d.D_ratio[1]).epsilon(1e-14));
   CHECK(j["tau0"].get<double>() == Approx(d.tau0).epsilon(1e-14));
-  CHECK(!j["species"][0].contains("T_ratio_sonine"));  // not computable yet: omitted, never faked
+  // First-Sonine fields (MG App. A) for the same mixture, computed in-process.
+  const auto sonine = theory::sonine_hcs(mix, model::Restitution::constant(2, 0.5), model::dilute_contact_values(2));
+  CHECK(j["species"][1]["T_ratio_sonine"].get<double>() == Approx(sonine.T[1] / sonine.T[0]).epsilon(1e-14));
+  CHECK(j["species"][0]["c"].get<double>() == Approx(sonine.c[0]).epsilon(1e-14));
+  CHECK(j["zeta_star"].get<double>() == Approx(sonine.zeta_star).epsilon(1e-14));
+  // Keys in the order of design.md §3 (extensions after them).
+  std::vector<std::string> keys;
+  for (const auto& [k, v] : nlohmann::ordered_json::parse(r.output)["species"][0].items()) keys.push_back(k);
+  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent"});
 }
 
 TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "[compare]") {
@@ -107,6 +116,8 @@ TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "
   const auto j = nlohmann::json::parse(r.output);
   const double gamma = 1.0 / j["species"][1]["T_ratio_maxwell"].get<double>();  // γ = T1/T2
   CHECK(gamma == Approx(3.8).margin(0.05));  // MG Fig. 1: γ ≃ 3.8 (two published digits)
+  const double gamma_sonine = 1.0 / j["species"][1]["T_ratio_sonine"].get<double>();
+  CHECK(gamma_sonine == Approx(3.8).margin(0.01));  // first Sonine: 3.8005
   CHECK(!j.contains("tau0"));  // dilute MG form has no absolute density
   const auto text = test::run_granmix("hcs --mu 10 --delta 2 --w 1 --alpha 0.5");
   CHECK(text.code == 0);

@@ -36,7 +36,7 @@ TEST_CASE("power law: n_k = n1 k^-theta - m_k = k - sigma_k = k^(1/3) - cut at o
 
 TEST_CASE("Enskog contact value of one species is Carnahan-Starling", "[model]") {
   // MG Eq. (26) reduces to (1 − ν/2)/(1 − ν)³ for one species: algebra, so rounding only.
-  for (double n : {0.01, 0.3, 0.9}) {
+  for (double n : {0.01, 0.3, 0.9}) {  // ν up to 0.47: inside the fluid range
     const Mixture mix({{1, 1, n}});
     const double nu = std::numbers::pi / 6 * n;
     CHECK(enskog_contact_values(mix)[0][0] == Approx((1 - nu / 2) / std::pow(1 - nu, 3)).epsilon(1e-14));
@@ -45,6 +45,7 @@ TEST_CASE("Enskog contact value of one species is Carnahan-Starling", "[model]")
   const auto chi = enskog_contact_values(dilute);
   CHECK(chi[0][1] == Approx(1.0).epsilon(1e-10));
   CHECK(chi[0][1] == chi[1][0]);
+  CHECK_THROWS_WITH(enskog_contact_values(Mixture({{1, 1, 1.0}})), Catch::Contains("fluid range"));  // ν = 0.52
 }
 
 TEST_CASE("Montanero-Garzo binary parameters", "[model]") {

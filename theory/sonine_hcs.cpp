@@ -1,0 +1,169 @@
+#include "sonine_hcs.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_multiroots.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "bracketed_root.hpp"
+#include "collision_rates.hpp"
+#include "model/errors.hpp"
+#include "model/gsl_setup.hpp"
+#include "settled_ratios.hpp"
+#include "sonine_terms.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+struct Problem {
+  const model::Mixture& mix;
+  const model::Restitution& alpha;
+  const std::vector<std::vector<double>>& chi;
+  bool maxwell;
+  std::size_t N;
+  double sref2;  // σ_ref² = σ_12² (σ_11² for one species)
+  double m1, m2;
+};
+
+// Everything at given temperatures T_k (Σ x_k T_k = 1): λ, c, cooling rates ζ_k.
+struct Evaluation {
+  std::vector<double> lambda, c, zeta;
+};
+
+Evaluation evaluate(const Problem& p, const std::vector<double>& T) {
+  const std::size_t N = p.N;
+  Evaluation e;
+  const double v0sq = 2.0 * (p.m1 + p.m2) / (p.m1 * p.m2);  // T = 1
+  for (std::size_t k = 0; k < N; ++k) e.lambda.push_back(p.mix[k].mass * v0sq / (2.0 * T[k]));
+  // Row i of the linear system: B_ii c_i + Σ_j D_ij c_j = A_i (MG Eqs. 33–38); ζ_i = z0_i + Σ_j Z_ij c_j.
+  Eigen::MatrixXd K(N, N), Z(N, N);
+  Eigen::VectorXd A(N), z0(N);
+  for (std::size_t i = 0; i < N; ++i) {
+    const double s_ii = std::pow(p.mix[i].diameter, 2) / p.sref2;
+    SonineMoments own = sonine_self(p.mix.fraction(i), p.chi[i][i], s_ii, p.alpha.eps(i, i), e.lambda[i]);
+    std::vector<SonineMoments> partner(N);
+    for (std::size_t j = 0; j < N; ++j) {
+      if (j == i) continue;
+      const double s_ij = std::pow(p.mix.sigma(i, j), 2) / p.sref2;
+      const double mu_ji = p.mix[j].mass / (p.mix[i].mass + p.mix[j].mass);
+      partner[j] = sonine_cross(p.mix.fraction(j), p.chi[i][j], s_ij, p.alpha.eps(i, j), mu_ji, e.lambda[i], e.lambda[j]);
+      own.zeta0 += partner[j].zeta0, own.zeta_self += partner[j].zeta_self;
+      own.Lambda0 += partner[j].Lambda0, own.Lambda_self += partner[j].Lambda_self;
+    }
+    const double f = 15.0 / (2.0 * e.lambda[i] * e.lambda[i]);
+    A[i] = -f * own.zeta0 - own.Lambda0;                               // MG (33), (36)
+    K(i, i) = f * (own.zeta_self + 0.5 * own.zeta0) + own.Lambda_self;  // MG (34), (38)
+    z0[i] = own.zeta0;
+    Z(i, i) = own.zeta_self;
+    for (std::size_t j = 0; j < N; ++j)
+      if (j != i) K(i, j) = f * partner[j].zeta_cross + partner[j].Lambda_cross, Z(i, j) = partner[j].zeta_cross;  // (35), (37)
+  }
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(N);
+  if (!p.maxwell) {
+    const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
+    if (!lu.isInvertible()) throw NumericalError("Sonine: the linear system for the cumulants is singular");
+    c = lu.solve(A);
+  }
+  const Eigen::VectorXd zeta = z0 + Z * c;  // MG Eq. (45) sides
+  e.c.assign(c.data(), c.data() + N);
+  e.zeta.assign(zeta.data(), zeta.data() + N);
+  return e;
+}
+
+// Temperatures from log ratios x_k = ln(T_k/T_1), normalised to Σ x_k T_k = 1.
+std::vector<double> temperatures(const Problem& p, const double* x) {
+  std::vector<double> T(p.N);
+  double mean = 0.0;
+  for (std::size_t k = 0; k < p.N; ++k) T[k] = std::exp(x[k]), mean += p.mix.fraction(k) * T[k];
+  for (double& v : T) v /= mean;
+  return T;
+}
+
+double relative_difference(double a, double b) { return (a - b) / (std::abs(a) + std::abs(b) + 1e-300); }
+
+std::vector<double> solve_binary(const Problem& p) {
+  auto f = [&](double x) {
+    const double xs[2] = {x, 0.0};  // x = ln γ = ln(T_1/T_2)
+    const Evaluation e = evaluate(p, temperatures(p, xs));
+    return relative_difference(e.zeta[0], e.zeta[1]);
+  };
+  const double x = bracketed_root(f, "Sonine temperature ratio: ζ_1 = ζ_2 in ln γ (MG Eq. 45)").x;
+  const double xs[2] = {x, 0.0};
+  return temperatures(p, xs);
+}
+
+std::vector<double> solve_many(const Problem& p) {
+  model::use_gsl_return_codes();
+  // Start: the Maxwellian ratios of v1 Eq. (A2), which equal MG's c = 0 level (physics.md §6).
+  const CollisionRates rates(p.mix, p.alpha, p.chi);
+  const std::vector<double> start = settled_ratios(rates);
+  const std::size_t n = p.N - 1;
+  gsl_vector* x = gsl_vector_alloc(n);
+  for (std::size_t k = 0; k < n; ++k) gsl_vector_set(x, k, std::log(start[k + 1]));
+  auto residual = [](const gsl_vector* xv, void* params, gsl_vector* out) -> int {
+    const auto& pr = *static_cast<const Problem*>(params);
+    std::vector<double> xs(pr.N, 0.0);
+    for (std::size_t k = 1; k < pr.N; ++k) xs[k] = gsl_vector_get(xv, k - 1);
+    const Evaluation e = evaluate(pr, temperatures(pr, xs.data()));
+    for (std::size_t k = 1; k < pr.N; ++k) gsl_vector_set(out, k - 1, relative_difference(e.zeta[k], e.zeta[0]));
+    return GSL_SUCCESS;
+  };
+  gsl_multiroot_function F{residual, n, const_cast<Problem*>(&p)};
+  gsl_multiroot_fsolver* s = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
+  if (s == nullptr || x == nullptr) throw NumericalError("gsl_multiroot_fsolver_alloc failed");
+  int status = gsl_multiroot_fsolver_set(s, &F, x);
+  for (int it = 0; status == GSL_SUCCESS && it < 200; ++it) {
+    status = gsl_multiroot_fsolver_iterate(s);
+    if (status != GSL_SUCCESS) break;
+    status = gsl_multiroot_test_residual(s->f, 1e-14);  // relative ζ differences at rounding level
+    if (status == GSL_SUCCESS) break;
+    if (status == GSL_CONTINUE) status = GSL_SUCCESS;
+  }
+  std::vector<double> xs(p.N, 0.0);
+  for (std::size_t k = 1; k < p.N; ++k) xs[k] = gsl_vector_get(s->x, k - 1);
+  const double worst = gsl_vector_max(s->f) > -gsl_vector_min(s->f) ? gsl_vector_max(s->f) : -gsl_vector_min(s->f);
+  gsl_multiroot_fsolver_free(s);
+  gsl_vector_free(x);
+  if (worst > 1e-10)
+    throw NumericalError(std::string("Sonine temperature ratios (gsl_multiroot hybrids): ") + gsl_strerror(status) +
+                         ", max relative ζ difference " + std::to_string(worst));
+  return temperatures(p, xs.data());
+}
+
+}  // namespace
+
+SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
+                     bool maxwell) {
+  if (alpha.is_viscoelastic()) throw std::invalid_argument("Sonine HCS: needs constant restitution coefficients");
+  const std::size_t N = mix.size();
+  const Problem p{mix, alpha, chi, maxwell, N, std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2), mix[0].mass, mix[N > 1 ? 1 : 0].mass};
+  SonineHcs out;
+  out.T = N == 1 ? std::vector<double>{1.0} : (N == 2 ? solve_binary(p) : solve_many(p));
+  const Evaluation e = evaluate(p, out.T);
+  out.c = e.c, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
+  for (std::size_t k = 0; k < N; ++k) {
+    double b = 0.0;
+    for (std::size_t j = 0; j < N; ++j) b += mix.fraction(j) * chi[k][j] * std::pow(mix.sigma(k, j), 2) / p.sref2;
+    out.beta.push_back(std::numbers::pi * b);  // MG Eq. (20)
+  }
+  return out;
+}
+
+double SonineHcs::delta(std::size_t k, double v) const {
+  const double l = lambda[k], v2 = v * v;
+  return 0.5 * l * l * v2 * v2 - 2.5 * l * v2 + 15.0 / 8.0;  // MG Eq. (28)
+}
+
+double SonineHcs::phi(std::size_t k, double v) const {
+  const double l = lambda[k];
+  return std::pow(l / std::numbers::pi, 1.5) * std::exp(-l * v * v) * (1.0 + 0.5 * c[k] * delta(k, v));  // MG Eq. (27)
+}
+
+double SonineHcs::G(std::size_t k, double v) const { return std::exp(tail_exponent(k) * v) * phi(k, v); }  // MG Eq. (30)
+
+}  // namespace granmix::theory

@@ -1,0 +1,35 @@
+#pragma once
+// Garzó–Dufty first-Sonine solution of the homogeneous cooling state (MG Sec. 2, Appendix A), for
+// a binary (MG's setting) and, with the same pair terms summed over partners, for N species.
+// Units are MG's: v0² = 2T(m_1+m_2)/(m_1 m_2) with T = Σ x_k T_k (m_2 = m_1 for one species),
+// λ_k = m_k v0²/(2T_k) (binary: T/(T_k μ_jk)), ζ* = ζ/(n σ_12² v0) (σ_11 for one species).
+// Unknowns: the cumulants c_k (N linear equations, MG Eqs. 31–38) and the temperature ratios from
+// equal cooling rates (MG Eq. 45): Brent bracketing in ln γ for two species; gsl_multiroot (hybrids)
+// in ln(T_k/T_1) from the Maxwellian ratios for more. `maxwell = true` sets every c_k = 0.
+#include <vector>
+
+#include "model/mixture.hpp"
+#include "model/restitution.hpp"
+
+namespace granmix::theory {
+
+struct SonineHcs {
+  std::vector<double> T;       // T_k/T, normalised so that Σ x_k T_k = 1
+  std::vector<double> c;       // c_k = 2 a₂ (physics.md §6)
+  std::vector<double> lambda;  // λ_k
+  std::vector<double> beta;    // β_k = π Σ_j x_j χ_kj (σ_kj/σ_ref)² (MG Eq. 20)
+  double zeta_star = 0.0;      // common reduced cooling rate ζ*
+  double gamma() const { return T[0] / T[1]; }  // MG's γ = T_1/T_2 (binary)
+  // Tail Φ_k ~ A exp(−(2β_k/ζ*) v*), linear in v* (physics.md §6 correction of MG Eq. 21).
+  double tail_exponent(std::size_t k) const { return 2.0 * beta[k] / zeta_star; }
+  // MG Eq. (27)/(17): first-Sonine Φ_k(v*), its Sonine deviation Δ_k (Eq. 28) and G_k (Eq. 30).
+  double phi(std::size_t k, double v) const;
+  double delta(std::size_t k, double v) const;
+  double G(std::size_t k, double v) const;
+};
+
+// α = restitution matrix (constant law only); χ = contact values (1 dilute).
+SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
+                     bool maxwell = false);
+
+}  // namespace granmix::theory
