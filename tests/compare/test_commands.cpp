@@ -104,8 +104,9 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   CHECK(j["species"][0]["c"].get<double>() == Approx(sonine.c[0]).epsilon(1e-14));
   CHECK(j["zeta_star"].get<double>() == Approx(sonine.zeta_star).epsilon(1e-14));
   // Keys in the order of design.md §3 (extensions after them).
+  const auto ordered = nlohmann::ordered_json::parse(r.output);
   std::vector<std::string> keys;
-  for (const auto& [k, v] : nlohmann::ordered_json::parse(r.output)["species"][0].items()) keys.push_back(k);
+  for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());
   CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent"});
 }
 
