@@ -104,7 +104,9 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   const theory::CollisionRates rates = theory::scene_rates(s, s.mixture, s.restitution);
   d.aged = s.initial.kind == model::InitialState::Kind::aged;
   d.T0 = d.aged ? std::vector<double>(s.mixture.size(), s.initial.T_hot) : theory::initial_temperatures(s.initial, rates);
+  const double unit = theory::scene_time_unit(s);
   d.times = s.times;
+  for (double& t : d.times) t *= unit;
   d.method = parse_method(s.dsmc.method);
   d.time_step_factor = s.dsmc.time_step;
   if (d.method == Method::timestep && d.aged)
@@ -115,8 +117,8 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.distribution_bins = s.observables.distribution_bins;
   d.distribution_vmax = s.observables.distribution_vmax;
   if (s.observables.tamsd) {
-    d.tamsd_measurement_time = s.observables.tamsd_measurement_time;
-    d.tamsd_lags = s.times;
+    d.tamsd_measurement_time = s.observables.tamsd_measurement_time * unit;
+    d.tamsd_lags = d.times;
     d.tamsd_tracers = s.observables.tamsd_tracers;
   }
   d.seed = seed;
@@ -125,6 +127,7 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.progress = progress;
   run.result = run_ensemble(d);
   run.table = make_table(s, d, run.result);
+  theory::rescale_time_columns(run.table, 1.0 / unit);
   if (d.distribution_bins > 0) {
     const std::size_t M = s.mixture.size(), B = d.distribution_bins;
     const double width = d.distribution_vmax / double(B);
@@ -133,7 +136,7 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
       for (std::size_t k = 0; k < M; ++k)
         for (std::size_t b = 0; b < B; ++b) {
           const std::size_t idx = (j * M + k) * B + b;
-          run.distribution.rows.push_back({d.times[j], double(k + 1), (b + 0.5) * width, run.result.distribution.mean[idx],
+          run.distribution.rows.push_back({s.times[j], double(k + 1), (b + 0.5) * width, run.result.distribution.mean[idx],
                                            run.result.distribution.err[idx]});
         }
   }

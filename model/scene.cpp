@@ -17,8 +17,19 @@ namespace {
 constexpr double huge = 1e300;
 
 Mixture read_mixture(TomlFields& f) {
-  const bool list = f.has("species"), law = f.has("power_law");
-  if (list == law) f.fail("species", "give exactly one of 'species' (a list) or 'power_law' (a table)", "species, power_law");
+  const int forms = int(f.has("species")) + int(f.has("power_law")) + int(f.has("montanero_garzo"));
+  if (forms != 1)
+    f.fail("species", "give exactly one of 'species' (a list), 'power_law' or 'montanero_garzo' (tables)",
+           "species, power_law, montanero_garzo");
+  const bool law = f.has("power_law");
+  if (f.has("montanero_garzo")) {
+    TomlFields m = f.sub("montanero_garzo");
+    // MG Sec. 3 parameters; units m_2 = σ_22 = 1 (model/mixture_generators.hpp).
+    const double mu = m.number("mu", 1e-6, 1e6), delta = m.number("delta", 1e-6, 1e6), w = m.number("w", 1e-3, 1e3);
+    const double nstar = m.number("n_star", 0.0, 1.9, 0.0);
+    m.finish();
+    return montanero_garzo_binary(mu, delta, w, nstar);
+  }
   if (law) {
     TomlFields p = f.sub("power_law");
     PowerLaw pl;
@@ -291,6 +302,7 @@ Scene load_scene(const std::string& path) {
   if (top.has("time") || !s.theory.sweep) {
     TomlFields t = top.sub("time");
     s.times = read_times(t);
+    s.time_unit_mg = t.choice("unit", {"natural", "mg"}, "natural") == "mg";
     t.finish();
   }
   check_combinations(s, top);

@@ -63,7 +63,8 @@ struct Scene {
   Restitution restitution = Restitution::constant(1, 1.0);
   bool enskog = false;
   InitialState initial;
-  std::vector<double> times;
+  std::vector<double> times;  // in the scene's unit (see time_unit)
+  bool time_unit_mg = false;  // [time] unit = "mg": times in t0 = λ11/v01(0) (MG Fig. 1)
   Observables observables;
   TheorySettings theory;
   DsmcSettings dsmc;

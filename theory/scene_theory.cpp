@@ -8,6 +8,7 @@
 #include "model/enskog.hpp"
 #include "msd.hpp"
 #include "tamsd.hpp"
+#include "time_unit.hpp"
 #include "tracer_limit.hpp"
 
 namespace granmix::theory {
@@ -131,14 +132,35 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
 
 }  // namespace
 
+double scene_time_unit(const model::Scene& s) {
+  if (!s.time_unit_mg) return 1.0;
+  const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
+  return mg_time_unit(s.mixture, s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size()),
+                      initial_temperatures(s.initial, rates)[0]);
+}
+
+void rescale_time_columns(model::Table& table, double factor) {
+  for (std::size_t c = 0; c < table.columns.size(); ++c) {
+    const std::string& name = table.columns[c];
+    if (name == "t" || name == "lag" || name == "t_s" || name == "t_s_err")
+      for (auto& row : table.rows) row[c] *= factor;
+  }
+}
+
 CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, const model::Restitution& law) {
   auto chi = s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
   return CollisionRates(mix, law, std::move(chi), moment_method(s.theory.moments));
 }
 
-TheoryResult run_theory(const model::Scene& s) {
+TheoryResult run_theory(const model::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;
+  // MG time unit: compute in natural units, report t, lag and t_s in units of t0.
+  const double unit = scene_time_unit(scene);
+  model::Scene scaled = scene;
+  for (double& t : scaled.times) t *= unit;
+  scaled.observables.tamsd_measurement_time *= unit;
+  const model::Scene& s = scaled;
   if (s.theory.sweep) {
     r.table = sweep_table(s);
   } else {
@@ -146,6 +168,7 @@ TheoryResult run_theory(const model::Scene& s) {
     const std::vector<Sample> samples = s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, r.stats);
     r.table = time_table(s, samples);
   }
+  if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

@@ -16,6 +16,11 @@ struct TheoryResult {
 
 TheoryResult run_theory(const model::Scene& scene);
 
+// Factor from the scene's time unit to natural units (1, or MG's t0 for [time] unit = "mg"), and
+// the conversion of a table's time columns (t, lag, t_s) by a factor.
+double scene_time_unit(const model::Scene& scene);
+void rescale_time_columns(model::Table& table, double factor);
+
 // The rates of a scene's mixture and law, with χ from Enskog or 1.
 CollisionRates scene_rates(const model::Scene& scene, const model::Mixture& mix, const model::Restitution& law);
 

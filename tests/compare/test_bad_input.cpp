@@ -73,6 +73,7 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
        ":6: collisions.restitution.viscoelastic: value 50 out of range"},
       {"both mixture forms", replace(good, "[collisions]", "power_law = { n1 = 0.1, theta = 3, n1_particles = 10 }\n[collisions]"),
        "mixture.species: give exactly one of"},
+      {"mg time unit typo", replace(good, "points = 5", "points = 5\nunit = \"seconds\""), ":12: time.unit: unknown value \"seconds\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");
