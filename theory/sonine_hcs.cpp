@@ -138,12 +138,15 @@ std::vector<double> solve_many(const Problem& p) {
 }  // namespace
 
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-                     bool maxwell) {
+                     bool maxwell, SonineSolver solver) {
   if (alpha.is_viscoelastic()) throw std::invalid_argument("Sonine HCS: needs constant restitution coefficients");
   const std::size_t N = mix.size();
   const Problem p{mix, alpha, chi, maxwell, N, std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2), mix[0].mass, mix[N > 1 ? 1 : 0].mass};
   SonineHcs out;
-  out.T = N == 1 ? std::vector<double>{1.0} : (N == 2 ? solve_binary(p) : solve_many(p));
+  if (N == 1)
+    out.T = {1.0};
+  else
+    out.T = (N == 2 && solver == SonineSolver::automatic) ? solve_binary(p) : solve_many(p);
   const Evaluation e = evaluate(p, out.T);
   out.c = e.c, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
   for (std::size_t k = 0; k < N; ++k) {

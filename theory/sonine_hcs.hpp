@@ -28,8 +28,12 @@ struct SonineHcs {
   double G(std::size_t k, double v) const;
 };
 
+// How the temperature ratios are found: automatic = bracketing for two species, multiroot above;
+// multiroot can be forced for two species (to check one solver against the other).
+enum class SonineSolver { automatic, multiroot };
+
 // α = restitution matrix (constant law only); χ = contact values (1 dilute).
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-                     bool maxwell = false);
+                     bool maxwell = false, SonineSolver solver = SonineSolver::automatic);
 
 }  // namespace granmix::theory

@@ -71,6 +71,18 @@ TEST_CASE("MG Fig. 1: mu = 10 - delta = 2 - w = 1 - alpha = 0.5 gives gamma clos
   CHECK(s.gamma() == Approx(3.8).margin(0.05));  // published "γ ≃ 3.8": two digits
 }
 
+TEST_CASE("N-species solver at N = 2 equals the binary bracketing solver", "[theory]") {
+  for (double alpha : {0.2, 0.5, 0.9}) {
+    const model::Mixture mix = model::montanero_garzo_binary(4, 0.5, 2, 0.2);
+    const auto chi = model::enskog_contact_values(mix);
+    const SonineHcs b = sonine_hcs(mix, model::Restitution::constant(2, alpha), chi);
+    const SonineHcs m = sonine_hcs(mix, model::Restitution::constant(2, alpha), chi, false, SonineSolver::multiroot);
+    CHECK(m.gamma() == Approx(b.gamma()).epsilon(1e-10));  // two root finders on one function, both to rounding
+    CHECK(m.c[0] == Approx(b.c[0]).epsilon(1e-9));
+    CHECK(m.c[1] == Approx(b.c[1]).epsilon(1e-9));
+  }
+}
+
 TEST_CASE("N-species solver: a binary with one species split in two reproduces the binary", "[theory]") {
   const model::Mixture two({{4, 1.3, 0.02}, {1, 1, 0.04}});
   const model::Mixture three({{4, 1.3, 0.02}, {1, 1, 0.01}, {1, 1, 0.03}});
