@@ -17,14 +17,15 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j$(JOBS)
 
 validate: build
-	@scripts/validate.sh $(BUILD)/granmix $(OUT)
+	@$(BUILD)/granmix validate --fidelity quick --out $(OUT)
 
-figures: validate
-	@scripts/figures.sh $(OUT)
+figures: build
+	@$(BUILD)/granmix validate --fidelity paper --out $(OUT)/paper
 
 bench: build
 	@$(BUILD)/bench/granmix_bench_theory
 	@$(BUILD)/bench/granmix_bench_dsmc
+	@$(BUILD)/bench/granmix_mg_table
 
 clean:
 	rm -rf $(BUILD) $(OUT)

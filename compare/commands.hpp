@@ -16,5 +16,7 @@ void set_command_line(int argc, char** argv);
 std::function<int()> add_theory_command(CLI::App& app);
 std::function<int()> add_hcs_command(CLI::App& app);
 std::function<int()> add_dsmc_command(CLI::App& app);
+std::function<int()> add_compare_command(CLI::App& app);
+std::function<int()> add_validate_command(CLI::App& app);
 
 }  // namespace granmix::compare

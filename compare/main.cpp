@@ -23,6 +23,8 @@ int main(int argc, char** argv) {
   actions["theory"] = compare::add_theory_command(app);
   actions["hcs"] = compare::add_hcs_command(app);
   actions["dsmc"] = compare::add_dsmc_command(app);
+  actions["compare"] = compare::add_compare_command(app);
+  actions["validate"] = compare::add_validate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

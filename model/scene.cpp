@@ -235,6 +235,50 @@ DsmcSettings read_dsmc(TomlFields& f) {
   return d;
 }
 
+std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
+  std::vector<CompareQuantity> out;
+  const toml::node* n = f.node("quantities");
+  const std::string allowed = "[{name = \"msd\", relative = 0.05, z = 4, species = [1, 2], t_min = 0, why = \"…\"}, …]";
+  if (n == nullptr || !n->is_array() || n->as_array()->empty()) f.fail("quantities", "expected a non-empty array of tables", allowed);
+  for (const toml::node& e : *n->as_array()) {
+    if (!e.is_table()) f.fail_at(e, "quantities", "element is not a table", allowed);
+    TomlFields q(*e.as_table(), f.file(), "compare.quantities[" + std::to_string(out.size() + 1) + "]");
+    CompareQuantity c;
+    c.name = q.choice("name", {"T", "msd", "gamma", "c", "tamsd", "t_s"});
+    c.relative = q.number("relative", 0.0, 10.0, 0.05);
+    c.z = q.number("z", 0.0, 100.0, 4.0);
+    if (q.has("species"))
+      for (double v : q.numbers("species", 0, double(species))) c.species.push_back(static_cast<std::size_t>(v));
+    c.t_min = q.number("t_min", 0.0, 1e300, 0.0);
+    c.why = q.text("why");  // every tolerance says why it is what it is
+    q.finish();
+    out.push_back(c);
+  }
+  return out;
+}
+
+PlotSettings read_plot(TomlFields& f) {
+  PlotSettings p;
+  p.x = f.choice("x", {"t", "t_s", "eps", "density", "lag", "v"}, "t");
+  p.y = f.choice("y", {"msd", "T", "gamma", "c", "D_ratio", "tamsd", "phi"}, "msd");
+  p.logx = f.flag("logx", false);
+  p.logy = f.flag("logy", false);
+  p.xlabel = f.text("xlabel", p.x);
+  p.ylabel = f.text("ylabel", p.y);
+  p.key = f.choice("key", {"top left", "top right", "bottom left", "bottom right"}, "top left");
+  if (f.has("slopes")) {
+    const toml::node* n = f.node("slopes");
+    if (!n->is_array()) f.fail("slopes", "expected an array", "[\"2\", \"1\", \"1/6\", \"log\"]");
+    for (const toml::node& e : *n->as_array()) {
+      const auto v = e.value<std::string>();
+      if (!v || (*v != "2" && *v != "1" && *v != "1/6" && *v != "log"))
+        f.fail_at(e, "slopes", "unknown guide slope", "\"2\", \"1\", \"1/6\", \"log\"");
+      p.slopes.push_back(*v);
+    }
+  }
+  return p;
+}
+
 std::string read_file(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw InputError(path + ": cannot open the scene file");
@@ -297,6 +341,17 @@ Scene load_scene(const std::string& path) {
   if (top.has("dsmc")) {
     TomlFields t = top.sub("dsmc");
     s.dsmc = read_dsmc(t);
+    t.finish();
+  }
+  if (top.has("compare")) {
+    TomlFields t = top.sub("compare");
+    s.compare = read_compare(t, s.mixture.size());
+    t.finish();
+    if (!s.dsmc.present) top.fail("compare", "comparing needs a [dsmc] table", "[dsmc] with quick and paper");
+  }
+  if (top.has("plot")) {
+    TomlFields t = top.sub("plot");
+    s.plot = read_plot(t);
     t.finish();
   }
   if (top.has("time") || !s.theory.sweep) {

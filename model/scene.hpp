@@ -55,6 +55,25 @@ struct DsmcSettings {
   DsmcFidelity quick, paper;
 };
 
+// [compare]: which quantities are compared and with what tolerance (design.md §3–4). A point passes
+// when |dsmc − theory| <= max(relative |theory|, z · dsmc_err); `species` and `t_min` restrict a
+// tolerance to where it applies (e.g. a stated model error of the theory for one species).
+struct CompareQuantity {
+  std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
+  double relative = 0.05, z = 4.0;
+  std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)
+  double t_min = 0.0;           // points at t < t_min are reported but not judged
+  std::string why;              // the reason for the tolerance, carried into report.json
+};
+
+// [plot]: the figure of the paper (design.md §3).
+struct PlotSettings {
+  std::string x = "t", y = "msd", xlabel, ylabel;
+  std::string key = "top left";  // legend position
+  bool logx = false, logy = false;
+  std::vector<std::string> slopes;  // guide lines: "2", "1", "1/6", "log"
+};
+
 struct Scene {
   std::string file;    // path as given
   std::string text;    // file content (hashed for provenance)
@@ -68,6 +87,8 @@ struct Scene {
   Observables observables;
   TheorySettings theory;
   DsmcSettings dsmc;
+  std::vector<CompareQuantity> compare;
+  PlotSettings plot;
 };
 
 // Throws InputError("file:line: key: what is wrong (allowed: …)").

@@ -191,3 +191,52 @@ TEST_CASE("mg-fig01 scene: gamma(t) in MG time units - theory to the Maxwellian 
   // DSMC: the first-Sonine value within 1% (issue 4's bound for γ), statistical error ~0.4%.
   CHECK(ds.at(last, "gamma") == Approx(sonine).epsilon(0.01));
 }
+
+TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a tolerance fails", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("compare");
+  const auto r = test::run_granmix("compare " + test::scene_path("mg-fig01.toml") + " --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  for (const char* f : {"theory.tsv", "dsmc.tsv", "deviations.tsv", "report.json", "mg-fig01.gp"})
+    CHECK(std::filesystem::exists(d / "mg-fig01" / f));
+  const auto rep = nlohmann::json::parse(std::ifstream(d / "mg-fig01" / "report.json"));
+  for (const char* key : {"scene", "pass", "quantities", "theory_seconds", "dsmc_seconds", "collisions", "collisions_per_second",
+                          "acceptance", "particles", "replicas", "seed", "fidelity"})
+    CHECK(rep.contains(key));
+  CHECK(rep["quantities"]["gamma"]["max_rel"].get<double>() < 0.01);
+  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.01);
+  // The same scene with an impossible tolerance fails with exit code 1 and says so.
+  std::ifstream in(test::scene_path("mg-fig01.toml"));
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string loose = "relative = 0.01, z = 4";
+  const auto at = text.find(loose);
+  REQUIRE(at != std::string::npos);
+  text.replace(at, loose.size(), "relative = 1e-9, z = 0");
+  test::write_file(d / "strict.toml", text);
+  const auto strict = test::run_granmix("compare " + (d / "strict.toml").string() + " --out " + (d / "strict").string());
+  CHECK(strict.code == 1);
+  CHECK(strict.output.find("NO") != std::string::npos);
+  // No half-written folder is left beside the finished one.
+  for (const auto& e : std::filesystem::directory_iterator(d / "strict")) CHECK(e.path().filename().string().rfind(".", 0) != 0);
+}
+
+TEST_CASE("granmix validate: every scene of a folder - summary.tsv and summary.json", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("validate");
+  std::filesystem::create_directories(d / "scenes");
+  std::filesystem::copy(test::scene_path("bo1-fig05.toml"), d / "scenes" / "bo1-fig05.toml");
+  std::filesystem::copy(test::scene_path("mg-fig01.toml"), d / "scenes" / "mg-fig01.toml");
+  const auto r = test::run_granmix("validate --scenes " + (d / "scenes").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code == 0);
+  CHECK(r.output.find("all pass") != std::string::npos);
+  const auto summary = nlohmann::json::parse(std::ifstream(d / "out" / "summary.json"));
+  CHECK(summary["pass"].get<bool>());
+  CHECK(summary["scenes"].size() == 2);
+  CHECK(std::filesystem::exists(d / "out" / "summary.tsv"));
+  // A broken scene in the folder fails the run (exit 1) without stopping the others.
+  test::write_file(d / "scenes" / "broken.toml", "[scene]\nname = \"broken\"\n");
+  const auto bad = test::run_granmix("validate --scenes " + (d / "scenes").string() + " --out " + (d / "out2").string());
+  CHECK(bad.code == 1);
+  CHECK(bad.output.find("ERROR") != std::string::npos);
+  CHECK(std::filesystem::exists(d / "out2" / "mg-fig01" / "report.json"));
+}

@@ -1,0 +1,88 @@
+#include "deviations.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace granmix::compare {
+
+namespace {
+
+int column(const model::Table& t, const std::string& name) {
+  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
+  return it == t.columns.end() ? -1 : int(it - t.columns.begin());
+}
+
+bool covers(const model::CompareQuantity& q, int species) {
+  return q.species.empty() || std::find(q.species.begin(), q.species.end(), std::size_t(species)) != q.species.end();
+}
+
+}  // namespace
+
+std::string label(const model::CompareQuantity& q) {
+  if (q.species.empty()) return q.name;
+  std::string s = q.name + "[";
+  for (std::size_t i = 0; i < q.species.size(); ++i) {
+    if (i) s += ',';
+    s += std::to_string(q.species[i]);
+  }
+  s += ']';
+  return s;
+}
+
+std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
+                                  const std::vector<model::CompareQuantity>& quantities) {
+  std::vector<Deviation> out;
+  const int tt = column(theory, "t"), ts = column(theory, "species"), dt = column(dsmc, "t"), ds = column(dsmc, "species");
+  if (tt < 0 || ts < 0 || dt < 0 || ds < 0) return out;
+  for (const auto& q : quantities) {
+    const int a = column(theory, q.name), b = column(dsmc, q.name), e = column(dsmc, q.name + "_err");
+    if (a < 0 || b < 0 || e < 0) continue;
+    for (const auto& row : theory.rows) {
+      const double t = row[tt];
+      const int species = int(row[ts]);
+      if (!covers(q, species)) continue;
+      // Same scene grid on both sides: times agree to rounding.
+      const auto match = std::find_if(dsmc.rows.begin(), dsmc.rows.end(), [&](const std::vector<double>& r) {
+        return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
+      });
+      if (match == dsmc.rows.end() || !std::isfinite(row[a]) || !std::isfinite((*match)[b])) continue;
+      Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, t >= q.t_min, true};
+      const double diff = d.dsmc - d.theory;
+      d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
+      d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
+      d.pass = std::abs(diff) <= std::max(q.relative * std::abs(d.theory), q.z * d.dsmc_err);
+      out.push_back(d);
+    }
+  }
+  return out;
+}
+
+std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std::vector<model::CompareQuantity>& quantities) {
+  std::vector<QuantityResult> out;
+  for (const auto& q : quantities) {
+    QuantityResult r{q};
+    for (const auto& x : d) {
+      if (x.quantity != label(q)) continue;
+      ++r.points;
+      if (!x.judged) continue;
+      ++r.judged;
+      if (!x.pass) ++r.failed;
+      r.max_rel = std::max(r.max_rel, std::abs(x.rel));
+      r.max_z = std::max(r.max_z, std::abs(x.z));
+    }
+    out.push_back(r);
+  }
+  return out;
+}
+
+std::string format_deviations(const std::string& provenance, const std::vector<Deviation>& d) {
+  std::string s = provenance + "t\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\n";
+  for (const auto& x : d)
+    s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
+                     int(x.judged), int(x.pass));
+  return s;
+}
+
+}  // namespace granmix::compare

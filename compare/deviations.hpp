@@ -1,0 +1,37 @@
+#pragma once
+// Theory against DSMC, point by point (design.md §3): for every compared quantity and every
+// (t, species) row present in both tables, rel = (dsmc − theory)/|theory| and z = (dsmc − theory)/err.
+// A judged point passes when |dsmc − theory| <= max(relative |theory|, z_tol err).
+#include <string>
+#include <vector>
+
+#include "model/scene.hpp"
+#include "model/table.hpp"
+
+namespace granmix::compare {
+
+struct Deviation {
+  double t;
+  int species;
+  std::string quantity;
+  double theory, dsmc, dsmc_err, rel, z;
+  bool judged, pass;
+};
+
+struct QuantityResult {
+  model::CompareQuantity spec;
+  std::size_t points = 0, judged = 0, failed = 0;
+  double max_rel = 0.0, max_z = 0.0;  // over judged points (|rel|, |z|)
+  bool pass() const { return failed == 0 && judged > 0; }
+};
+
+// A quantity's name in files and reports: "msd", or "msd[1,0]" when restricted to species.
+std::string label(const model::CompareQuantity& q);
+
+std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
+                                  const std::vector<model::CompareQuantity>& quantities);
+std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std::vector<model::CompareQuantity>& quantities);
+// deviations.tsv: provenance, then t species quantity theory dsmc dsmc_err rel z judged pass.
+std::string format_deviations(const std::string& provenance, const std::vector<Deviation>& d);
+
+}  // namespace granmix::compare

@@ -1,0 +1,116 @@
+#include "scene_compare.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <nlohmann/json.hpp>
+
+#include "commands.hpp"
+#include "dsmc/scene_dsmc.hpp"
+#include "gnuplot_figure.hpp"
+#include "provenance.hpp"
+#include "sha256.hpp"
+#include "theory/scene_theory.hpp"
+#include "tsv_writer.hpp"
+
+namespace granmix::compare {
+
+namespace {
+
+// Largest relative difference between two theory tables of the same shape (value columns only).
+double max_relative_difference(const model::Table& a, const model::Table& b) {
+  double worst = 0.0;
+  for (std::size_t r = 0; r < std::min(a.rows.size(), b.rows.size()); ++r)
+    for (std::size_t c = 0; c < a.columns.size(); ++c) {
+      if (a.columns[c] == "t" || a.columns[c] == "species" || a.columns[c] == "eps" || a.columns[c] == "density") continue;
+      const double x = a.rows[r][c], y = b.rows[r][c];
+      if (std::isfinite(x) && std::isfinite(y) && x != 0.0) worst = std::max(worst, std::abs(y / x - 1.0));
+    }
+  return worst;
+}
+
+nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std::uint64_t seed, const std::string& fidelity) {
+  nlohmann::ordered_json j;
+  j["scene"] = s.name;
+  j["source"] = s.source;
+  j["pass"] = o.pass;
+  j["quantities"] = nlohmann::ordered_json::object();
+  for (const auto& q : o.quantities)
+    j["quantities"][label(q.spec)] = {{"max_rel", q.max_rel},
+                                    {"max_z", q.max_z},
+                                    {"tolerance", {{"relative", q.spec.relative}, {"z", q.spec.z}}},
+                                    {"points", q.points},
+                                    {"judged", q.judged},
+                                    {"failed", q.failed},
+                                    {"why", q.spec.why}};
+  j["theory_seconds"] = o.theory_seconds;
+  j["theory_error"] = o.theory_error;
+  j["dsmc_seconds"] = o.dsmc_seconds;
+  j["collisions"] = o.collisions;
+  j["collisions_per_second"] = o.collisions_per_second;
+  j["acceptance"] = o.acceptance;
+  j["particles"] = o.particles;
+  j["replicas"] = o.replicas;
+  j["seed"] = seed;
+  j["fidelity"] = fidelity;
+  j["figure"] = o.figure;
+  return j;
+}
+
+}  // namespace
+
+SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const std::string& fidelity, std::uint64_t seed,
+                           int threads) {
+  SceneOutcome o;
+  o.scene = s.name;
+  std::filesystem::create_directories(out);
+  const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
+  std::filesystem::remove_all(tmp);
+  std::filesystem::create_directories(tmp);
+  try {
+    Provenance p;
+    p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = sha256_hex(s.text), p.command = command_line();
+    const theory::TheoryResult th = theory::run_theory(s);
+    o.theory_seconds = th.seconds;
+    {  // error estimate: the same scene at 100× tighter tolerance (design: speed against error)
+      model::Scene tight = s;
+      tight.theory.rtol = std::max(1e-14, s.theory.rtol / 100.0);
+      o.theory_error = max_relative_difference(th.table, theory::run_theory(tight).table);
+    }
+    write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), th.table));
+    const model::Table* dsmc_table = nullptr;
+    dsmc::DsmcRun run;
+    if (s.dsmc.present) {
+      run = dsmc::run_scene_dsmc(s, fidelity, seed, threads);
+      Provenance pd = p;
+      pd.seed = std::to_string(seed) + " (replica r uses stream (seed, r))", pd.fidelity = fidelity;
+      write_atomically(tmp / "dsmc.tsv", format_tsv(provenance_header(pd), run.table));
+      if (!run.distribution.rows.empty()) write_atomically(tmp / "distribution.tsv", format_tsv(provenance_header(pd), run.distribution));
+      dsmc_table = &run.table;
+      o.dsmc_seconds = run.result.seconds, o.collisions = double(run.result.accepted);
+      o.collisions_per_second = run.result.collisions_per_second(), o.acceptance = run.result.acceptance();
+      o.particles = run.result.particles, o.replicas = run.result.replicas;
+    }
+    o.compared = !s.compare.empty() && dsmc_table != nullptr;
+    o.pass = true;
+    if (o.compared) {
+      const std::vector<Deviation> d = deviations(th.table, *dsmc_table, s.compare);
+      o.quantities = summarise(d, s.compare);
+      for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
+      Provenance pd = p;
+      pd.seed = std::to_string(seed), pd.fidelity = fidelity;
+      write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), d));
+    }
+    o.figure = write_figure(tmp, s, th.table, dsmc_table).message;
+    write_atomically(tmp / "report.json", report(s, o, seed, fidelity).dump(2) + "\n");
+    std::filesystem::remove_all(out / s.name);
+    std::filesystem::rename(tmp, out / s.name);  // the scene folder appears complete or not at all
+  } catch (...) {
+    std::filesystem::remove_all(tmp);
+    throw;
+  }
+  return o;
+}
+
+}  // namespace granmix::compare

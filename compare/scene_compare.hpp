@@ -1,0 +1,29 @@
+#pragma once
+// One scene compared end to end (design.md §3): theory (and its error estimate from a rerun at
+// 100× tighter tolerance), DSMC, deviations, report.json and the figure, written to a temporary
+// folder beside DIR/<scene> and renamed into place only when complete.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "deviations.hpp"
+#include "model/scene.hpp"
+
+namespace granmix::compare {
+
+struct SceneOutcome {
+  std::string scene;
+  bool pass = false;
+  bool compared = false;  // the scene has [compare] quantities
+  std::vector<QuantityResult> quantities;
+  double theory_seconds = 0.0, theory_error = 0.0, dsmc_seconds = 0.0;
+  double collisions = 0.0, collisions_per_second = 0.0, acceptance = 0.0;
+  std::size_t particles = 0, replicas = 0;
+  std::string figure;
+};
+
+SceneOutcome compare_scene(const model::Scene& scene, const std::filesystem::path& out, const std::string& fidelity, std::uint64_t seed,
+                           int threads);
+
+}  // namespace granmix::compare

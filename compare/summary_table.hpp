@@ -1,0 +1,17 @@
+#pragma once
+// The per-quantity summary lines of `granmix compare` and `granmix validate` (design.md §3): scene,
+// quantity, max rel, max z, tolerance, pass, theory seconds (error estimate), DSMC seconds,
+// collisions per second; and summary.tsv / summary.json for a validation run.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scene_compare.hpp"
+
+namespace granmix::compare {
+
+std::string summary_header();
+std::string summary_lines(const SceneOutcome& o);
+void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors);
+
+}  // namespace granmix::compare
