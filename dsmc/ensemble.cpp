@@ -109,16 +109,35 @@ struct Stop {
   std::size_t index, lag;
 };
 
-std::vector<Stop> schedule(const DsmcSetup& s, std::size_t starts) {
+// TAMSD start times: t = 0 and a geometric grid from 1e-6 𝒯 to 𝒯. A cooling gas changes on the
+// scale τ0 ≪ 𝒯 at first, which a uniform grid cannot resolve (it overweights the hot start).
+std::vector<double> tamsd_starts(const DsmcSetup& s, std::size_t n) {
+  std::vector<double> t = {0.0};
+  for (std::size_t g = 1; g < n; ++g) t.push_back(s.tamsd_measurement_time * std::pow(10.0, -6.0 + 6.0 * double(g - 1) / double(n - 2)));
+  return t;
+}
+
+// Trapezoid weights of the starts valid for a lag (t + Δ <= 𝒯): the time average over [0, 𝒯 − Δ]
+// of physics.md §4 as a quadrature on the start grid.
+std::vector<double> tamsd_weights(const std::vector<double>& starts, double lag, double T) {
+  std::vector<double> w(starts.size(), 0.0);
+  std::size_t n = 0;
+  while (n < starts.size() && starts[n] + lag <= T) ++n;
+  for (std::size_t g = 0; g < n; ++g) {
+    const double left = g > 0 ? starts[g] - starts[g - 1] : 0.0, right = g + 1 < n ? starts[g + 1] - starts[g] : 0.0;
+    w[g] = 0.5 * (left + right);
+  }
+  if (n == 1) w[0] = 1.0;
+  return w;
+}
+
+std::vector<Stop> schedule(const DsmcSetup& s, const std::vector<double>& starts, const std::vector<std::vector<double>>& weights) {
   std::vector<Stop> stops;
   for (std::size_t j = 0; j < s.times.size(); ++j) stops.push_back({s.times[j], Stop::sample, j, 0});
-  if (s.tamsd_measurement_time > 0.0) {
-    const double delta = s.tamsd_measurement_time / double(starts);
-    for (std::size_t g = 0; g < starts; ++g) {
-      stops.push_back({g * delta, Stop::start, g, 0});
-      for (std::size_t l = 0; l < s.tamsd_lags.size(); ++l)
-        if (g * delta + s.tamsd_lags[l] <= s.tamsd_measurement_time) stops.push_back({g * delta + s.tamsd_lags[l], Stop::end, g, l});
-    }
+  for (std::size_t g = 0; g < starts.size(); ++g) {
+    stops.push_back({starts[g], Stop::start, g, 0});
+    for (std::size_t l = 0; l < s.tamsd_lags.size(); ++l)
+      if (weights[l][g] > 0.0) stops.push_back({starts[g] + s.tamsd_lags[l], Stop::end, g, l});
   }
   std::stable_sort(stops.begin(), stops.end(), [](const Stop& a, const Stop& b) { return a.t < b.t; });
   return stops;
@@ -138,15 +157,17 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
     loop.cool_to(1.5 * double(p.size()));  // ⟨T⟩ = 2E/(3N) = 1
     loop.reset_clock();
   }
-  constexpr std::size_t starts = 512;
   const std::size_t M = p.species(), L = s.tamsd_lags.size();
+  const std::vector<double> starts = tamsd ? tamsd_starts(s, 512) : std::vector<double>{};
+  std::vector<std::vector<double>> weights;
+  for (double lag : s.tamsd_lags) weights.push_back(tamsd_weights(starts, lag, s.tamsd_measurement_time));
   // Tracers: the first K particles of each species (initial velocities are i.i.d., so any K will do).
   std::vector<std::size_t> tracers(M);
   for (std::size_t k = 0; k < M; ++k) tracers[k] = std::min(s.tamsd_tracers, p.count(k));
-  std::vector<std::vector<Vec3>> at_start(tamsd ? starts : 0);
+  std::vector<std::vector<Vec3>> at_start(starts.size());
   std::vector<double> sum(L * M, 0.0), count(L * M, 0.0);
   out.seconds_setup += lap(clock);
-  for (const Stop& stop : schedule(s, starts)) {
+  for (const Stop& stop : schedule(s, starts, weights)) {
     loop.run_until(stop.t);
     out.seconds_loop += lap(clock);
     if (stop.kind == Stop::sample) {
@@ -160,8 +181,9 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
       for (std::size_t k = 0; k < M; ++k)
         for (std::size_t j = 0; j < tracers[k]; ++j, ++n) {
           const Vec3 a = at_start[stop.index][n], b = displacement(p, p.begin(k) + j, stop.t);
-          sum[stop.lag * M + k] += (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y) + (b.z - a.z) * (b.z - a.z);
-          count[stop.lag * M + k] += 1.0;
+          const double w = weights[stop.lag][stop.index];
+          sum[stop.lag * M + k] += w * ((b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y) + (b.z - a.z) * (b.z - a.z));
+          count[stop.lag * M + k] += w;
         }
     }
     out.seconds_sample += lap(clock);

@@ -31,7 +31,8 @@ struct DsmcSetup {
   bool aged = false;
   double time_step_factor = 3e-3;  // timestep method: Δt = factor λ11/v01(t) (MG Sec. 3)
   // Time-averaged MSD (physics.md §4) of `tamsd_tracers` particles per species over [0, 𝒯]: for
-  // each lag, [R(t+Δ) − R(t)]² averaged over 512 uniformly spaced starts t <= 𝒯 − Δ and the tracers.
+  // each lag, [R(t+Δ) − R(t)]² averaged over the tracers and, with trapezoid weights, over 512 start
+  // times t <= 𝒯 − Δ (0 and a geometric grid from 1e-6 𝒯: the early, fast-cooling times need them).
   double tamsd_measurement_time = 0.0;  // 𝒯; 0: no TAMSD
   std::vector<double> tamsd_lags;
   std::size_t tamsd_tracers = 100;

@@ -6,6 +6,7 @@
 #include "model/errors.hpp"
 #include "theory/initial_state.hpp"
 #include "theory/scene_theory.hpp"
+#include "theory/tracer_limit.hpp"
 
 namespace granmix::dsmc {
 
@@ -103,7 +104,15 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
                        std::to_string(k + 1) + " without particles (allowed: enough for every species)");
   const theory::CollisionRates rates = theory::scene_rates(s, s.mixture, s.restitution);
   d.aged = s.initial.kind == model::InitialState::Kind::aged;
-  d.T0 = d.aged ? std::vector<double>(s.mixture.size(), s.initial.T_hot) : theory::initial_temperatures(s.initial, rates);
+  if (d.aged) {
+    d.T0.assign(s.mixture.size(), s.initial.T_hot);
+  } else if (s.theory.tracer) {
+    // Tracer scenes: start where the tracer theory starts (gas T1 = 1, intruders θ), not at the settled
+    // state of the finite mixture, whose ⟨T⟩ = 1 normalisation would cool the gas by n2 θ / n1.
+    d.T0 = {1.0, theory::tracer_limit(rates).theta};
+  } else {
+    d.T0 = theory::initial_temperatures(s.initial, rates);
+  }
   const double unit = theory::scene_time_unit(s);
   d.times = s.times;
   for (double& t : d.times) t *= unit;
