@@ -198,9 +198,12 @@ TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
 void check_combinations(const Scene& s, TomlFields& top) {
   const auto& o = s.observables;
   const bool settled_start = s.initial.kind == InitialState::Kind::hcs || s.theory.tracer;
-  if (s.theory.sweep && (o.temperatures || o.msd || o.rescaled_time || o.gamma || o.tamsd))
-    top.fail("theory", "a sweep gives settled D_k/D_1 only", "observables.d_ratio with theory.sweep");
-  if (s.theory.sweep && !o.d_ratio) top.fail("observables", "a sweep needs d_ratio = true", "d_ratio");
+  if (s.theory.sweep && (o.temperatures || o.msd || o.rescaled_time || o.tamsd || o.distribution_bins))
+    top.fail("theory", "a sweep gives settled quantities only", "observables d_ratio, gamma, cumulant with theory.sweep");
+  if (s.theory.sweep && !(o.d_ratio || o.gamma || o.cumulant))
+    top.fail("observables", "a sweep needs d_ratio, gamma or cumulant", "d_ratio, gamma, cumulant");
+  if (s.theory.sweep && (o.gamma || o.cumulant) && s.restitution.is_viscoelastic())
+    top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
   if (s.theory.msd == "closed" && !settled_start)

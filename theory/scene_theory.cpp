@@ -7,6 +7,7 @@
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
 #include "msd.hpp"
+#include "sonine_hcs.hpp"
 #include "tamsd.hpp"
 #include "time_unit.hpp"
 #include "tracer_limit.hpp"
@@ -22,16 +23,36 @@ MomentMethod moment_method(const std::string& name) {
   return name == "series" ? MomentMethod::series : name == "quadrature" ? MomentMethod::quadrature : MomentMethod::automatic;
 }
 
+// Settled quantities along a parameter: D_k/D_1 (v1 Eq. 19), the first-Sonine γ = T_1/T_2 with the
+// Maxwellian γ beside it, and the cumulants c_k (MG App. A). Species 0 rows carry γ.
 Table sweep_table(const model::Scene& s) {
   const model::Sweep& sw = *s.theory.sweep;
+  const auto& o = s.observables;
+  const std::size_t N = s.mixture.size();
   Table t;
-  t.columns = {sw.parameter == model::Sweep::Parameter::eps ? "eps" : "density", "species", "D_ratio"};
+  t.columns = {sw.parameter == model::Sweep::Parameter::eps ? "eps" : "density", "species"};
+  if (o.d_ratio) t.columns.push_back("D_ratio");
+  if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
+  if (o.cumulant) t.columns.push_back("c");
   for (double x : sw.values) {
     const bool eps = sw.parameter == model::Sweep::Parameter::eps;
     const model::Mixture mix = eps ? s.mixture : s.mixture.with_density(sw.species, x);
     const model::Restitution law = eps ? model::Restitution::constant(mix.size(), x) : s.restitution;
-    const SettledDiffusion d = settled_diffusion(scene_rates(s, mix, law));
-    for (std::size_t k = 0; k < mix.size(); ++k) t.rows.push_back({x, static_cast<double>(k + 1), d.D_ratio[k]});
+    const CollisionRates rates = scene_rates(s, mix, law);
+    const SettledDiffusion d = o.d_ratio ? settled_diffusion(rates) : SettledDiffusion{};
+    SonineHcs sonine, maxwell;
+    if (o.gamma || o.cumulant) {
+      const auto chi = s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(N);
+      sonine = sonine_hcs(mix, law, chi);
+      if (o.gamma) maxwell = sonine_hcs(mix, law, chi, true);
+    }
+    for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
+      std::vector<double> row = {x, double(k)};
+      if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
+      if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
+      if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
+      t.rows.push_back(std::move(row));
+    }
   }
   return t;
 }
