@@ -12,28 +12,21 @@
 #include "event_loop.hpp"
 #include "time_step_scheme.hpp"
 #include "model/enskog.hpp"
+#include "model/enum_names.hpp"
 
 namespace granmix::dsmc {
 
-Method parse_method(const std::string& name) {
-  if (name == "auto") return Method::automatic;
-  if (name == "direct") return Method::direct;
-  if (name == "lowrank") return Method::lowrank;
-  if (name == "bird") return Method::bird;
-  if (name == "timestep") return Method::timestep;
-  throw std::invalid_argument("unknown DSMC method '" + name + "'");
-}
+namespace {
+constexpr model::EnumNames<Method, 5> method_names = {{{Method::automatic, "auto"},
+                                                        {Method::direct, "direct"},
+                                                        {Method::lowrank, "lowrank"},
+                                                        {Method::bird, "bird"},
+                                                        {Method::timestep, "timestep"}}};
+}  // namespace
 
-const char* to_string(Method m) {
-  switch (m) {
-    case Method::automatic: return "auto";
-    case Method::direct: return "direct";
-    case Method::lowrank: return "lowrank";
-    case Method::bird: return "bird";
-    case Method::timestep: return "timestep";
-  }
-  return "?";
-}
+Method parse_method(const std::string& name) { return model::parse_enum(method_names, name, "DSMC method"); }
+
+const char* to_string(Method m) { return model::enum_name(method_names, m); }
 
 std::vector<std::size_t> counts_for(const model::Mixture& mix, std::size_t total) {
   std::vector<std::size_t> c;

@@ -8,27 +8,21 @@
 #include <vector>
 
 #include "cvode_session.hpp"
+#include "enum_names.hpp"
 #include "errors.hpp"
 #include "gsl_setup.hpp"
 #include "sundials_check.hpp"
 
 namespace granmix::model {
 
-ViscoelasticForm parse_viscoelastic_form(const std::string& name) {
-  if (name == "exact") return ViscoelasticForm::exact;
-  if (name == "series") return ViscoelasticForm::series;
-  if (name == "pade") return ViscoelasticForm::pade;
-  throw std::invalid_argument("unknown viscoelastic form '" + name + "'");
-}
+namespace {
+constexpr EnumNames<ViscoelasticForm, 3> form_names = {
+    {{ViscoelasticForm::exact, "exact"}, {ViscoelasticForm::series, "series"}, {ViscoelasticForm::pade, "pade"}}};
+}  // namespace
 
-const char* to_string(ViscoelasticForm f) {
-  switch (f) {
-    case ViscoelasticForm::exact: return "exact";
-    case ViscoelasticForm::series: return "series";
-    case ViscoelasticForm::pade: return "pade";
-  }
-  return "?";
-}
+ViscoelasticForm parse_viscoelastic_form(const std::string& name) { return parse_enum(form_names, name, "viscoelastic form"); }
+
+const char* to_string(ViscoelasticForm f) { return enum_name(form_names, f); }
 
 double restitution_series(double y) {
   // v1 Eq. (5), Horner in y.

@@ -7,28 +7,20 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "model/enum_names.hpp"
 #include "model/errors.hpp"
 #include "model/gsl_setup.hpp"
 
 namespace granmix::theory {
 
-MsdMethod parse_msd_method(const std::string& name) {
-  if (name == "eq17") return MsdMethod::eq17;
-  if (name == "vacf") return MsdMethod::vacf;
-  if (name == "longtime") return MsdMethod::longtime;
-  if (name == "closed") return MsdMethod::closed;
-  throw std::invalid_argument("unknown MSD method '" + name + "'");
-}
+namespace {
+constexpr model::EnumNames<MsdMethod, 4> msd_names = {
+    {{MsdMethod::eq17, "eq17"}, {MsdMethod::vacf, "vacf"}, {MsdMethod::longtime, "longtime"}, {MsdMethod::closed, "closed"}}};
+}  // namespace
 
-const char* to_string(MsdMethod m) {
-  switch (m) {
-    case MsdMethod::eq17: return "eq17";
-    case MsdMethod::vacf: return "vacf";
-    case MsdMethod::longtime: return "longtime";
-    case MsdMethod::closed: return "closed";
-  }
-  return "?";
-}
+MsdMethod parse_msd_method(const std::string& name) { return model::parse_enum(msd_names, name, "MSD method"); }
+
+const char* to_string(MsdMethod m) { return model::enum_name(msd_names, m); }
 
 namespace {
 
