@@ -21,7 +21,8 @@ CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::
     for (std::size_t i = 0; i < N; ++i) {
       const double s = mix_.sigma(k, i);
       const double mk = mix_[k].mass, mi = mix_[i].mass;
-      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mi / (mi + mk), mk / (mi + mk), 1.0 / mk, 1.0 / mi};
+      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mi / (mi + mk), mk / (mi + mk), 1.0 / mk, 1.0 / mi,
+                           law_.is_viscoelastic() ? CollisionMoments{} : constant_moments(law_.eps(k, i))};
     }
 }
 
@@ -60,7 +61,26 @@ double CollisionRates::inv_tau_v_species(std::size_t k, const double* T) const {
 }
 
 void CollisionRates::xi_all(const double* T, double* out) const {
-  for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = xi_species(k, T);
+  const std::size_t N = mix_.size();
+  if (law_.is_viscoelastic()) {
+    for (std::size_t k = 0; k < N; ++k) out[k] = xi_species(k, T);
+    return;
+  }
+  // Constant law, the hot path of the temperature ODE with hundreds of species: each unordered pair
+  // once, √V shared by ξ_ki and ξ_ik (V is symmetric), moments precomputed. Same formula as xi().
+  for (std::size_t k = 0; k < N; ++k) out[k] = 0.0;
+  for (std::size_t k = 0; k < N; ++k) {
+    const double Tk = T[k];
+    for (std::size_t i = k; i < N; ++i) {
+      const Pair& a = pairs_[k * N + i];
+      const double Ti = T[i], sqrtV = std::sqrt(Tk * a.inv_mk + Ti * a.inv_mi);
+      out[k] += a.prefactor * sqrtV * a.mu * (a.W.D - a.mu_k * (Ti - Tk) / Tk * a.W.W2);
+      if (i != k) {
+        const Pair& b = pairs_[i * N + k];
+        out[i] += b.prefactor * sqrtV * b.mu * (b.W.D - b.mu_k * (Tk - Ti) / Ti * b.W.W2);
+      }
+    }
+  }
 }
 
 void CollisionRates::inv_tau_v_all(const double* T, double* out) const {

@@ -50,6 +50,7 @@ class CollisionRates {
     double mu;         // m_i / (m_i + m_k)
     double mu_k;       // m_k / (m_i + m_k)
     double inv_mk, inv_mi;
+    CollisionMoments W;  // constant law: the pair's moments, computed once
   };
   const Pair& pair(std::size_t k, std::size_t i) const { return pairs_[k * mix_.size() + i]; }
   // Shared by ξ and τ: √V μ, X − 1 and the moments.
