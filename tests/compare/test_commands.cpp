@@ -204,11 +204,11 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
                           "acceptance", "particles", "replicas", "seed", "fidelity"})
     CHECK(rep.contains(key));
   CHECK(rep["quantities"]["gamma"]["max_rel"].get<double>() < 0.01);
-  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.01);
+  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.015);
   // The same scene with an impossible tolerance fails with exit code 1 and says so.
   std::ifstream in(test::scene_path("mg-fig01.toml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string loose = "relative = 0.01, z = 4";
+  const std::string loose = "relative = 0.015, z = 4";
   const auto at = text.find(loose);
   REQUIRE(at != std::string::npos);
   text.replace(at, loose.size(), "relative = 1e-9, z = 0");
