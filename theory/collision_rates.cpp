@@ -39,8 +39,8 @@ CollisionRates::Terms CollisionRates::pair_terms(std::size_t k, std::size_t i, d
 }
 
 double CollisionRates::xi(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  const Terms t = pair_terms(k, i, Tk, Ti);
-  return pair(k, i).prefactor * t.sqrtV_mu * (t.W.D - t.X_minus_1 * t.W.W2);
+  const Pair& p = pair(k, i);
+  return xi_formula(p, std::sqrt(Tk * p.inv_mk + Ti * p.inv_mi), Tk, Ti, moments(k, i, Tk * p.inv_mk + Ti * p.inv_mi));
 }
 
 double CollisionRates::inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const {
@@ -74,10 +74,10 @@ void CollisionRates::xi_all(const double* T, double* out) const {
     for (std::size_t i = k; i < N; ++i) {
       const Pair& a = pairs_[k * N + i];
       const double Ti = T[i], sqrtV = std::sqrt(Tk * a.inv_mk + Ti * a.inv_mi);
-      out[k] += a.prefactor * sqrtV * a.mu * (a.W.D - a.mu_k * (Ti - Tk) / Tk * a.W.W2);
+      out[k] += xi_formula(a, sqrtV, Tk, Ti, a.W);
       if (i != k) {
         const Pair& b = pairs_[i * N + k];
-        out[i] += b.prefactor * sqrtV * b.mu * (b.W.D - b.mu_k * (Tk - Ti) / Ti * b.W.W2);
+        out[i] += xi_formula(b, sqrtV, Ti, Tk, b.W);
       }
     }
   }

@@ -59,6 +59,10 @@ class CollisionRates {
     CollisionMoments W;
   };
   Terms pair_terms(std::size_t k, std::size_t i, double Tk, double Ti) const;
+  // ξ_ki from its parts (the formula at the top of this file); shared by xi() and xi_all().
+  static double xi_formula(const Pair& p, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
+    return p.prefactor * sqrtV * p.mu * (W.D - p.mu_k * (Ti - Tk) / Tk * W.W2);
+  }
 
   model::Mixture mix_;
   model::Restitution law_;

@@ -78,10 +78,8 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
       model::check_cvode(CVode(cv.mem(), s_end, cv.y(), &s, CV_ONE_STEP), "CVode",
                          "temperature ODE at t = " + std::to_string(to_t(s)));
       int q = 0;
-      double h = 0.0;
       model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
-      model::check_cvode(CVodeGetLastStep(cv.mem(), &h), "CVodeGetLastStep");
-      Step st{s, h, q, taylor_.size()};
+      Step st{s, q, taylor_.size()};
       double factorial = 1.0;
       for (int j = 0; j <= q; ++j) {
         model::check_cvode(CVodeGetDky(cv.mem(), s, j, dky_v), "CVodeGetDky");

@@ -62,7 +62,7 @@ class TemperatureHistory {
 
  private:
   struct Step {
-    double s_end, h;
+    double s_end;
     int order;
     std::size_t offset;  // into taylor_: (order+1) blocks of n_ values, y^(j)(s_end)/j!
   };
