@@ -22,10 +22,18 @@ bool covers(const model::CompareQuantity& q, int species) {
 
 std::string label(const model::CompareQuantity& q) {
   if (q.species.empty()) return q.name;
+  // Runs of consecutive species are written as ranges: msd[1,0], msd_ratio[13-43].
   std::string s = q.name + "[";
-  for (std::size_t i = 0; i < q.species.size(); ++i) {
+  for (std::size_t i = 0; i < q.species.size();) {
+    std::size_t j = i;
+    while (j + 1 < q.species.size() && q.species[j + 1] == q.species[j] + 1) ++j;
     if (i) s += ',';
     s += std::to_string(q.species[i]);
+    if (j > i) {  // a pair as "1,2", a longer run as "13-43"
+      s += j > i + 1 ? '-' : ',';
+      s += std::to_string(q.species[j]);
+    }
+    i = j + 1;
   }
   s += ']';
   return s;
@@ -34,8 +42,11 @@ std::string label(const model::CompareQuantity& q) {
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
                                   const std::vector<model::CompareQuantity>& quantities) {
   std::vector<Deviation> out;
-  const int tt = column(theory, "t"), ts = column(theory, "species"), dt = column(dsmc, "t"), ds = column(dsmc, "species");
-  if (tt < 0 || ts < 0 || dt < 0 || ds < 0) return out;
+  // Rows are located by the first column of the theory table: t, or the swept value, or v*.
+  if (theory.columns.empty()) return out;
+  const std::string& x = theory.columns.front();
+  const int tt = 0, ts = column(theory, "species"), dt = column(dsmc, x), ds = column(dsmc, "species");
+  if (ts < 0 || dt < 0 || ds < 0) return out;
   for (const auto& q : quantities) {
     const int a = column(theory, q.name), b = column(dsmc, q.name), e = column(dsmc, q.name + "_err");
     if (a < 0 || b < 0 || e < 0) continue;
@@ -43,7 +54,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       const double t = row[tt];
       const int species = int(row[ts]);
       if (!covers(q, species)) continue;
-      // Same scene grid on both sides: times agree to rounding.
+      // Same scene grid on both sides: the locations agree to rounding.
       const auto match = std::find_if(dsmc.rows.begin(), dsmc.rows.end(), [&](const std::vector<double>& r) {
         return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
       });
@@ -77,8 +88,8 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
   return out;
 }
 
-std::string format_deviations(const std::string& provenance, const std::vector<Deviation>& d) {
-  std::string s = provenance + "t\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\n";
+std::string format_deviations(const std::string& provenance, const std::string& x, const std::vector<Deviation>& d) {
+  std::string s = provenance + x + "\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\n";
   for (const auto& x : d)
     s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
                      int(x.judged), int(x.pass));

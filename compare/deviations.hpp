@@ -1,6 +1,6 @@
 #pragma once
 // Theory against DSMC, point by point (design.md §3): for every compared quantity and every
-// (t, species) row present in both tables, rel = (dsmc − theory)/|theory| and z = (dsmc − theory)/err.
+// (t or x, species) row present in both tables, rel = (dsmc − theory)/|theory| and z = (dsmc − theory)/err.
 // A judged point passes when |dsmc − theory| <= max(relative |theory|, z_tol err).
 #include <string>
 #include <vector>
@@ -11,7 +11,7 @@
 namespace granmix::compare {
 
 struct Deviation {
-  double t;
+  double t;  // the location: t, or the swept value, or v*
   int species;
   std::string quantity;
   double theory, dsmc, dsmc_err, rel, z;
@@ -31,7 +31,8 @@ std::string label(const model::CompareQuantity& q);
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
                                   const std::vector<model::CompareQuantity>& quantities);
 std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std::vector<model::CompareQuantity>& quantities);
-// deviations.tsv: provenance, then t species quantity theory dsmc dsmc_err rel z judged pass.
-std::string format_deviations(const std::string& provenance, const std::vector<Deviation>& d);
+// deviations.tsv: provenance, then x species quantity theory dsmc dsmc_err rel z judged pass, where x is
+// the location column of the theory table (t; eps, density, n_star for a sweep; v for a distribution).
+std::string format_deviations(const std::string& provenance, const std::string& x, const std::vector<Deviation>& d);
 
 }  // namespace granmix::compare

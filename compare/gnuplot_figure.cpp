@@ -35,6 +35,26 @@ std::string quote(const std::string& s) {
   return "\"" + q + "\"";
 }
 
+// First row of the last block of equal first-column values (the last time of a long-form table).
+std::size_t last_block_start(const model::Table& t) {
+  std::size_t r = t.rows.size();
+  while (r > 0 && t.rows[r - 1][0] == t.rows.back()[0]) --r;
+  return r;
+}
+
+// x = "species": one curve over species at the last sample time (v1 Fig. 8).
+std::vector<std::string> species_plots(const model::PlotSettings& p, const model::Table& theory, const model::Table* dsmc) {
+  std::vector<std::string> plots;
+  plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}')) with linespoints ls 1 pt 6 ps 0.5 "
+                              "title 'theory, t = {:g}'",
+                              last_block_start(theory), p.y, theory.rows.back()[0]));
+  if (dsmc && std::find(dsmc->columns.begin(), dsmc->columns.end(), p.y + "_err") != dsmc->columns.end())
+    plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):(column('{}_err')) with yerrorbars "
+                                "ls 2 pt 7 ps 0.6 title 'DSMC'",
+                                last_block_start(*dsmc), p.y, p.y));
+  return plots;
+}
+
 }  // namespace
 
 FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& s, const model::Table& theory,
@@ -53,12 +73,12 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
   gp += "set key " + p.key + "\n";
   if (p.logx) gp += "set logscale x\nset format x '10^{%T}'\n";
   if (p.logy) gp += "set logscale y\nset format y '10^{%T}'\n";
-  std::vector<std::string> plots;
+  std::vector<std::string> plots = p.x == "species" ? species_plots(p, theory, dsmc) : std::vector<std::string>{};
   const int sc = column(theory, "species");
   auto has_values = [&](int k) {
     return std::any_of(theory.rows.begin(), theory.rows.end(), [&](const auto& r) { return int(r[sc]) == k && std::isfinite(r[yc]); });
   };
-  for (std::size_t o = 0; o < cycle.size(); ++o) {
+  for (std::size_t o = 0; p.x != "species" && o < cycle.size(); ++o) {
     const int k = cycle[o];
     if ((p.y == "D_ratio" && k == 1) || !has_values(k)) continue;  // D_1/D_1 = 1; γ lives on species 0 only
     const std::string label = k == 0 ? (p.y == "gamma" ? "T1/T2" : "total") : fmt::format("species {}", k);

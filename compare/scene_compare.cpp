@@ -100,7 +100,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
       for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
       Provenance pd = p;
       pd.seed = std::to_string(seed), pd.fidelity = fidelity;
-      write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), d));
+      write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), th.table.columns.front(), d));
     }
     o.figure = write_figure(tmp, s, th.table, dsmc_table).message;
     write_atomically(tmp / "report.json", report(s, o, seed, fidelity).dump(2) + "\n");

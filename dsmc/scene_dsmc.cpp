@@ -36,6 +36,7 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
   if (o.rescaled_time) add("t_s");
   if (o.temperatures) add("T");
   if (o.msd) add("msd");
+  if (o.msd_ratio) add("msd_ratio");
   if (o.cumulant) add("c");
   if (o.gamma) add("gamma");
   if (o.tamsd) t.columns.push_back("lag"), add("tamsd");
@@ -53,6 +54,14 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
       if (o.rescaled_time) push({r.rescaled_time.mean[j], r.rescaled_time.err[j]});
       if (o.temperatures) push(species_value(r.T));
       if (o.msd) push(species_value(r.msd));
+      if (o.msd_ratio) {  // ⟨R_k²⟩/⟨R_1²⟩, relative errors in quadrature (species taken as independent)
+        if (k == 0) {
+          push({nan, nan});
+        } else {
+          const double a = r.msd.mean[j * M + k - 1], b = r.msd.mean[j * M], q = a / b;
+          push({q, std::abs(q) * std::hypot(r.msd.err[j * M + k - 1] / a, r.msd.err[j * M] / b)});
+        }
+      }
       if (o.cumulant) push(k > 0 ? species_value(r.cumulant) : std::pair{nan, nan});
       if (o.gamma) {
         if (k == 0) {  // γ = T_1/T_2 with relative errors added in quadrature
@@ -120,7 +129,7 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.time_step_factor = s.dsmc.time_step;
   if (d.method == Method::timestep && d.aged)
     throw InputError(s.file + ": dsmc.method = \"timestep\" has no aged start (allowed: auto, direct, lowrank, bird)");
-  d.msd = s.observables.msd;
+  d.msd = s.observables.needs_msd();
   d.cumulant = s.observables.cumulant;
   d.rescale = s.dsmc.rescale;
   d.distribution_bins = s.observables.distribution_bins;

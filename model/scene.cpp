@@ -149,6 +149,7 @@ Observables read_observables(TomlFields& f) {
   Observables o;
   o.temperatures = f.flag("temperatures", false);
   o.msd = f.flag("msd", false);
+  o.msd_ratio = f.flag("msd_ratio", false);
   o.rescaled_time = f.flag("rescaled_time", false);
   o.d_ratio = f.flag("d_ratio", false);
   o.gamma = f.flag("gamma", false);
@@ -166,8 +167,8 @@ Observables read_observables(TomlFields& f) {
     o.tamsd_tracers = t.count("tracers", 1, 100000, 100);
     t.finish();
   }
-  if (!(o.temperatures || o.msd || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant || o.distribution_bins))
-    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, rescaled_time, d_ratio, gamma, tamsd, cumulant");
+  if (!(o.temperatures || o.needs_msd() || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant || o.distribution_bins))
+    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, msd_ratio, rescaled_time, d_ratio, gamma, tamsd, cumulant");
   return o;
 }
 
@@ -198,7 +199,7 @@ TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
 void check_combinations(const Scene& s, TomlFields& top) {
   const auto& o = s.observables;
   const bool settled_start = s.initial.kind == InitialState::Kind::hcs || s.theory.tracer;
-  if (s.theory.sweep && (o.temperatures || o.msd || o.rescaled_time || o.tamsd || o.distribution_bins))
+  if (s.theory.sweep && (o.temperatures || o.needs_msd() || o.rescaled_time || o.tamsd || o.distribution_bins))
     top.fail("theory", "a sweep gives settled quantities only", "observables d_ratio, gamma, cumulant with theory.sweep");
   if (s.theory.sweep && !(o.d_ratio || o.gamma || o.cumulant))
     top.fail("observables", "a sweep needs d_ratio, gamma or cumulant", "d_ratio, gamma, cumulant");
@@ -247,7 +248,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     if (!e.is_table()) f.fail_at(e, "quantities", "element is not a table", allowed);
     TomlFields q(*e.as_table(), f.file(), "compare.quantities[" + std::to_string(out.size() + 1) + "]");
     CompareQuantity c;
-    c.name = q.choice("name", {"T", "msd", "gamma", "c", "tamsd", "t_s"});
+    c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     if (q.has("species"))
@@ -262,8 +263,8 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
 
 PlotSettings read_plot(TomlFields& f) {
   PlotSettings p;
-  p.x = f.choice("x", {"t", "t_s", "eps", "density", "lag", "v"}, "t");
-  p.y = f.choice("y", {"msd", "T", "gamma", "c", "D_ratio", "tamsd", "phi"}, "msd");
+  p.x = f.choice("x", {"t", "t_s", "eps", "density", "n_star", "lag", "v", "species"}, "t");
+  p.y = f.choice("y", {"msd", "msd_ratio", "T", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "phi", "delta", "G"}, "msd");
   p.logx = f.flag("logx", false);
   p.logy = f.flag("logy", false);
   p.xlabel = f.text("xlabel", p.x);

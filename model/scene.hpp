@@ -15,6 +15,7 @@ namespace granmix::model {
 struct Observables {
   bool temperatures = false;   // column T (species 0: ⟨T⟩)
   bool msd = false;            // column msd (species 0: total MSD, v1 Eq. 16)
+  bool msd_ratio = false;      // column msd_ratio = ⟨R_k²⟩/⟨R_1²⟩ (v1 Fig. 8)
   bool rescaled_time = false;  // column t_s (v1 Fig. 1)
   bool d_ratio = false;        // column D_ratio = D_k/D_1 (in time, or settled along a sweep)
   bool gamma = false;          // column gamma = T_1/T_2 (species 0 row)
@@ -24,6 +25,7 @@ struct Observables {
   bool cumulant = false;       // column c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (DSMC; theory with the Sonine solver)
   double tamsd_measurement_time = 0.0;
   std::size_t tamsd_tracers = 100;  // DSMC: tracer particles per species
+  bool needs_msd() const { return msd || msd_ratio; }
 };
 
 struct Sweep {
@@ -68,7 +70,7 @@ struct CompareQuantity {
 
 // [plot]: the figure of the paper (design.md §3).
 struct PlotSettings {
-  std::string x = "t", y = "msd", xlabel, ylabel;
+  std::string x = "t", y = "msd", xlabel, ylabel;  // x = "species": the values at the last time
   std::string key = "top left";  // legend position
   bool logx = false, logy = false;
   std::vector<std::string> slopes;  // guide lines: "2", "1", "1/6", "log"

@@ -71,6 +71,7 @@ Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
   if (o.rescaled_time) t.columns.push_back("t_s");
   if (o.temperatures) t.columns.push_back("T");
   if (o.msd) t.columns.push_back("msd");
+  if (o.msd_ratio) t.columns.push_back("msd_ratio");
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (o.gamma) t.columns.push_back("gamma");
   if (o.tamsd) t.columns.push_back("lag"), t.columns.push_back("tamsd");
@@ -83,6 +84,7 @@ Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
       if (o.rescaled_time) row.push_back(x.t_s);
       if (o.temperatures) row.push_back(all ? s.mixture.mean_temperature(x.T) : x.T[k - 1]);
       if (o.msd) row.push_back(all ? msd_total(s.mixture, x.msd) : x.msd[k - 1]);
+      if (o.msd_ratio) row.push_back(all ? nan : x.msd[k - 1] / x.msd[0]);
       if (o.d_ratio) row.push_back(all ? nan : x.D_ratio[k - 1]);
       if (o.gamma) row.push_back(all ? x.T[0] / x.T[1] : nan);
       if (o.tamsd) row.push_back(s.times[j]), row.push_back(all ? nan : x.tamsd[k - 1]);
@@ -119,12 +121,13 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   TemperatureOptions opt;
   opt.rtol = s.theory.rtol;
   opt.t_first = s.times.front();
-  opt.reduced_time = o.rescaled_time || (o.msd && method == MsdMethod::eq17);
-  opt.diffusion_integral = o.msd && method == MsdMethod::longtime;
-  opt.vacf = o.msd && method == MsdMethod::vacf;
+  const bool msd = o.needs_msd();
+  opt.reduced_time = o.rescaled_time || (msd && method == MsdMethod::eq17);
+  opt.diffusion_integral = msd && method == MsdMethod::longtime;
+  opt.vacf = msd && method == MsdMethod::vacf;
   const TemperatureHistory h(rates, T0, s.times.back(), opt);
   stats = h.stats();
-  const bool settled = o.tamsd || (o.msd && method == MsdMethod::closed);
+  const bool settled = o.tamsd || (msd && method == MsdMethod::closed);
   const SettledDiffusion d0 = settled ? diffusion_at(rates, T0) : SettledDiffusion{};
   const std::size_t N = rates.size();
   std::vector<Sample> out;
@@ -134,7 +137,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
     h.temperatures(t, x.T.data());
     if (o.rescaled_time) x.t_s = h.reduced_time(t, 0);
     for (std::size_t k = 0; k < N; ++k) {
-      if (o.msd) {
+      if (msd) {
         switch (method) {
           case MsdMethod::eq17: x.msd.push_back(msd_eq17(h, k, t)); break;
           case MsdMethod::vacf: x.msd.push_back(h.msd_vacf(t, k)); break;

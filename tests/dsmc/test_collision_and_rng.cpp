@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "dsmc/collision_rule.hpp"
+#include "dsmc/particles.hpp"
 #include "dsmc/rng.hpp"
 #include "dsmc/sum_tree.hpp"
 
@@ -114,4 +115,25 @@ TEST_CASE("sum tree: sampling frequencies and updates", "[dsmc]") {
   CHECK(chi2 < 18.5);  // 4 degrees of freedom: P(> 18.5) = 1e-3
   t.set(2, 0.0);
   for (int j = 0; j < 10000; ++j) CHECK(t.sample(rng.uniform()) != 2);
+}
+
+TEST_CASE("initial state with single-particle species: zero total momentum and exact T_k", "[dsmc]") {
+  // A single particle keeps its own velocity; the others drift to cancel its momentum. Without that
+  // the centre-of-mass energy is never dissipated (a temperature floor in v1 Fig. 8).
+  const model::Mixture mix({{1.0, 1.0, 0.1}, {8.0, 2.0, 1e-3}, {27.0, 3.0, 1e-4}, {64.0, 4.0, 1e-4}});
+  const std::vector<std::size_t> counts = {1000, 10, 1, 1};
+  const std::vector<double> T = {1.0, 2.0, 3.0, 4.0};
+  Rng rng(5, 0);
+  const Particles p = maxwellian_particles(mix, counts, T, false, true, rng);
+  double px = 0, py = 0, pz = 0, scale = 0;
+  for (std::size_t k = 0; k < 4; ++k) {
+    CHECK(species_temperature(p, k) == Approx(T[k]).epsilon(1e-13));  // rounding of one rescale
+    for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
+      px += p.mass[k] * p.vx[j], py += p.mass[k] * p.vy[j], pz += p.mass[k] * p.vz[j];
+      scale += p.mass[k] * std::abs(p.vx[j]);
+    }
+  }
+  const double worst = std::max({std::abs(px), std::abs(py), std::abs(pz)}) / scale;
+  std::printf("single-particle species: |P| / sum |m v| = %.2e, T_k exact\n", worst);
+  CHECK(worst < 1e-13);  // momentum zero to rounding (sum of ~1000 terms)
 }
