@@ -39,6 +39,16 @@ std::string label(const model::CompareQuantity& q) {
   return s;
 }
 
+std::string tolerance_text(const model::CompareQuantity& q) {
+  return fmt::format("{:g} or {:g}σ", q.relative, q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
+}
+
+nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
+  nlohmann::ordered_json j = {{"relative", q.relative}, {"z", q.z}};
+  if (q.absolute > 0) j["absolute"] = q.absolute;
+  return j;
+}
+
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
                                   const std::vector<model::CompareQuantity>& quantities) {
   std::vector<Deviation> out;
@@ -63,7 +73,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
-      d.pass = std::abs(diff) <= std::max(q.relative * std::abs(d.theory), q.z * d.dsmc_err);
+      d.pass = std::abs(diff) <= std::max({q.relative * std::abs(d.theory), q.z * d.dsmc_err, q.absolute});
       out.push_back(d);
     }
   }

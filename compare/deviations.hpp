@@ -2,6 +2,7 @@
 // Theory against DSMC, point by point (design.md §3): for every compared quantity and every
 // (t or x, species) row present in both tables, rel = (dsmc − theory)/|theory| and z = (dsmc − theory)/err.
 // A judged point passes when |dsmc − theory| <= max(relative |theory|, z_tol err).
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
@@ -27,6 +28,10 @@ struct QuantityResult {
 
 // A quantity's name in files and reports: "msd", or "msd[1,0]" when restricted to species.
 std::string label(const model::CompareQuantity& q);
+
+// "0.2 or 4σ" (and "or ±0.02" when an absolute tolerance is set), and the same as JSON.
+std::string tolerance_text(const model::CompareQuantity& q);
+nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q);
 
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
                                   const std::vector<model::CompareQuantity>& quantities);

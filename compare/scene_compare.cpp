@@ -39,7 +39,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   for (const auto& q : o.quantities)
     j["quantities"][label(q.spec)] = {{"max_rel", q.max_rel},
                                     {"max_z", q.max_z},
-                                    {"tolerance", {{"relative", q.spec.relative}, {"z", q.spec.z}}},
+                                    {"tolerance", tolerance_json(q.spec)},
                                     {"points", q.points},
                                     {"judged", q.judged},
                                     {"failed", q.failed},

@@ -25,25 +25,25 @@ std::string summary_lines(const SceneOutcome& o) {
   std::string s;
   for (const auto& q : o.quantities)
     s += fmt::format("{:<24} {:<8} {:>9.4f} {:>8.2f} {:>16} {:<5} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
-                     fmt::format("{:g} or {:g}σ", q.spec.relative, q.spec.z), q.pass() ? "yes" : "NO", theory, dsmc, cps);
+                     tolerance_text(q.spec), q.pass() ? "yes" : "NO", theory, dsmc, cps);
   return s;
 }
 
 void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors) {
   std::string tsv = "# granmix validate summary (" + utc_now_iso8601() + ")\n";
-  tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\n";
+  tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\n";
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
                                     {"theory_error", o.theory_error}, {"dsmc_seconds", o.dsmc_seconds},
                                     {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()}};
     if (o.quantities.empty())
-      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
+      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
                          o.dsmc_seconds, o.collisions_per_second);
     for (const auto& q : o.quantities) {
-      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative, q.spec.z,
-                         int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second);
-      scene["quantities"][label(q.spec)] = {{"max_rel", q.max_rel}, {"max_z", q.max_z}, {"tolerance", {{"relative", q.spec.relative}, {"z", q.spec.z}}},
+      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative, q.spec.z,
+                         int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second, q.spec.absolute);
+      scene["quantities"][label(q.spec)] = {{"max_rel", q.max_rel}, {"max_z", q.max_z}, {"tolerance", tolerance_json(q.spec)},
                                           {"pass", q.pass()}};
     }
     j.push_back(scene);

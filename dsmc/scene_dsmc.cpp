@@ -1,6 +1,8 @@
 #include "scene_dsmc.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
@@ -92,12 +94,74 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
   return t;
 }
 
+// Value and error of column `name` at (row of time j, species k) of a long-form DSMC table.
+std::pair<double, double> cell(const Table& t, std::size_t row, const std::string& name) {
+  const auto c = std::size_t(std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin());
+  if (c + 1 >= t.columns.size()) throw std::logic_error("DSMC table has no column " + name);
+  return {t.rows[row][c], t.rows[row][c + 1]};
+}
+
 }  // namespace
+
+DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
+                       const std::function<void(std::size_t, std::size_t)>& progress) {
+  const model::Sweep& sw = *s.theory.sweep;
+  const bool eps = sw.parameter == model::Sweep::Parameter::eps;
+  const auto& o = s.observables;
+  const std::size_t M = s.mixture.size();
+  DsmcRun out;
+  Table& t = out.table;
+  t.columns = {eps ? "eps" : "density", "species"};
+  auto add = [&](const char* name) { t.columns.push_back(name), t.columns.push_back(std::string(name) + "_err"); };
+  if (o.d_ratio) add("D_ratio");
+  if (o.gamma) add("gamma");
+  if (o.cumulant) add("c");
+  const double nan = Table::missing;
+  for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) {
+    const double x = s.dsmc.at[n];
+    model::Scene point = s;  // one HCS run at this value of the parameter, from the settled ratios
+    point.theory.sweep.reset();
+    if (eps) point.restitution = model::Restitution::constant(M, x);
+    else point.mixture = s.mixture.with_density(sw.species, x);
+    point.initial.kind = model::InitialState::Kind::hcs;
+    point.observables = model::Observables{};
+    point.observables.gamma = o.gamma, point.observables.msd = o.d_ratio, point.observables.cumulant = o.cumulant;
+    // Each point its own seed, derived from the master seed: points are independent samples.
+    const DsmcRun r = run_scene_dsmc(point, fidelity, seed + 1000003 * (n + 1), threads, progress);
+    const std::size_t per_time = M > 1 ? M + 1 : M, first = 0, last = r.table.rows.size() - per_time;
+    auto row_of = [&](std::size_t start, std::size_t k) { return start + (M > 1 ? k : k - 1); };
+    for (std::size_t k = (o.gamma ? 0 : 1); k <= M; ++k) {
+      std::vector<double> row = {x, double(k)};
+      auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
+      if (o.d_ratio) {  // settled D_k/D_1 = MSD increment of k over that of species 1 (v1 Eq. 19, 21)
+        if (k <= 1) {
+          push(k == 0 ? std::pair{nan, nan} : std::pair{1.0, 0.0});
+        } else {
+          auto increment = [&](std::size_t kk) {
+            const auto a = cell(r.table, row_of(first, kk), "msd"), b = cell(r.table, row_of(last, kk), "msd");
+            return std::pair{b.first - a.first, std::hypot(a.second, b.second)};  // errors as if independent: an upper bound
+          };
+          const auto dk = increment(k), d1 = increment(1);
+          const double q = dk.first / d1.first;
+          push({q, std::abs(q) * std::hypot(dk.second / dk.first, d1.second / d1.first)});
+        }
+      }
+      if (o.gamma) push(k == 0 ? cell(r.table, row_of(last, 0), "gamma") : std::pair{nan, nan});
+      if (o.cumulant) push(k == 0 ? std::pair{nan, nan} : cell(r.table, row_of(last, k), "c"));
+      t.rows.push_back(std::move(row));
+    }
+    DsmcResult& a = out.result;
+    a.method = r.result.method, a.species = M, a.replicas = r.result.replicas, a.particles = r.result.particles;
+    a.trials += r.result.trials, a.accepted += r.result.accepted, a.seconds += r.result.seconds;
+    a.seconds_setup += r.result.seconds_setup, a.seconds_loop += r.result.seconds_loop, a.seconds_sample += r.result.seconds_sample;
+  }
+  return out;
+}
 
 DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
                        const std::function<void(std::size_t, std::size_t)>& progress) {
   if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
-  if (s.theory.sweep) throw InputError(s.file + ": a sweep scene is theory only (no [dsmc] time series)");
+  if (s.theory.sweep) return run_sweep_dsmc(s, fidelity, seed, threads, progress);
   if (s.observables.d_ratio)
     throw InputError(s.file + ": DSMC does not measure d_ratio (allowed: temperatures, msd, cumulant, gamma, rescaled_time, tamsd)");
   const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;

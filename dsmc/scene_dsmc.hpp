@@ -23,4 +23,9 @@ struct DsmcRun {
 DsmcRun run_scene_dsmc(const model::Scene& scene, const std::string& fidelity, std::uint64_t seed, int threads,
                        const std::function<void(std::size_t, std::size_t)>& progress = {});
 
+// Sweep scenes: one settled-state run per value in dsmc.at; rows (x, species) with D_ratio, gamma,
+// c and their errors, in the long form of the theory sweep table.
+DsmcRun run_sweep_dsmc(const model::Scene& scene, const std::string& fidelity, std::uint64_t seed, int threads,
+                       const std::function<void(std::size_t, std::size_t)>& progress = {});
+
 }  // namespace granmix::dsmc

@@ -1,5 +1,6 @@
 #include "scene.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -215,6 +216,12 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("observables", "tamsd uses the settled-state model", "initial.temperatures = \"hcs\" or theory.tracer, constant ε");
   if (o.tamsd && !s.times.empty() && s.times.back() >= o.tamsd_measurement_time)
     top.fail("observables", "tamsd lags (the time grid) must stay below measurement_time", "time.end < measurement_time");
+  if (s.theory.sweep && s.dsmc.present && (s.dsmc.at.empty() || s.times.size() < 2))
+    top.fail("dsmc", "DSMC of a sweep runs at chosen points", "dsmc.at = [values of the sweep], [time] with two or more times");
+  if (!s.theory.sweep && !s.dsmc.at.empty()) top.fail("dsmc", "dsmc.at is for sweep scenes", "theory.sweep with dsmc.at");
+  if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps)
+    for (double x : s.dsmc.at)
+      if (x > 1.0) top.fail("dsmc", "dsmc.at holds restitution coefficients here", "values in [0, 1]");
   if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps && s.restitution.is_viscoelastic())
     top.fail("theory", "an ε sweep needs a constant restitution coefficient", "collisions.restitution = number");
 }
@@ -234,6 +241,7 @@ DsmcSettings read_dsmc(TomlFields& f) {
   // In units of the 1–1 mean free time λ11/v01(t); 10 is already a huge step (tests/dsmc).
   d.time_step = f.number("time_step", 1e-6, 10.0, 3e-3);
   d.rescale = f.flag("rescale", true);
+  if (f.has("at")) d.at = f.numbers("at", 0.0, 1e300);
   d.quick = read_fidelity(f, "quick");
   d.paper = read_fidelity(f, "paper");
   return d;
@@ -251,6 +259,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
+    c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
     if (q.has("species"))
       for (double v : q.numbers("species", 0, double(species))) c.species.push_back(static_cast<std::size_t>(v));
     c.t_min = q.number("t_min", 0.0, 1e300, 0.0);
@@ -366,6 +375,15 @@ Scene load_scene(const std::string& path) {
   }
   check_combinations(s, top);
   top.finish();
+  if (s.theory.sweep && !s.dsmc.at.empty()) {  // theory also at the simulated points (compared there)
+    auto& v = s.theory.sweep->values;
+    for (double x : s.dsmc.at) {  // a grid value within rounding of x becomes x exactly
+      const auto near = std::find_if(v.begin(), v.end(), [&](double g) { return std::abs(g - x) <= 1e-9 * std::max(1.0, std::abs(x)); });
+      if (near != v.end()) *near = x;
+      else v.push_back(x);
+    }
+    std::sort(v.begin(), v.end());
+  }
   return s;
 }
 

@@ -54,15 +54,19 @@ struct DsmcSettings {
   std::string method = "auto";  // auto | direct | lowrank | bird | timestep
   double time_step = 3e-3;      // timestep: Δt = time_step λ11/v01(t) (MG Sec. 3)
   bool rescale = true;          // scale initial velocities to exactly T_k(0)
+  // Sweep scenes: the swept values simulated (settled start; [time] gives the sample times:
+  // γ and c at the last, D_k/D_1 from MSD increments between the first and the last).
+  std::vector<double> at;
   DsmcFidelity quick, paper;
 };
 
 // [compare]: which quantities are compared and with what tolerance (design.md §3–4). A point passes
-// when |dsmc − theory| <= max(relative |theory|, z · dsmc_err); `species` and `t_min` restrict a
+// when |dsmc − theory| <= max(relative |theory|, z · dsmc_err, absolute); `species` and `t_min` restrict a
 // tolerance to where it applies (e.g. a stated model error of the theory for one species).
 struct CompareQuantity {
   std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
   double relative = 0.05, z = 4.0;
+  double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)
   double t_min = 0.0;           // points at t < t_min are reported but not judged
   std::string why;              // the reason for the tolerance, carried into report.json
