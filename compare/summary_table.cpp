@@ -11,7 +11,7 @@
 namespace granmix::compare {
 
 std::string summary_header() {
-  return fmt::format("{:<24} {:<8} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
+  return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
                      "pass", "theory s (error)", "DSMC s", "collisions/s");
 }
 
@@ -20,7 +20,7 @@ std::string summary_lines(const SceneOutcome& o) {
   const std::string cps = o.collisions_per_second > 0 ? fmt::format("{:.3g}", o.collisions_per_second) : "-";
   const std::string dsmc = o.dsmc_seconds > 0 ? fmt::format("{:.2f}", o.dsmc_seconds) : "-";
   if (o.quantities.empty())
-    return fmt::format("{:<24} {:<8} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only", o.pass ? "yes" : "NO",
+    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only", o.pass ? "yes" : "NO",
                        theory, dsmc, cps);
   std::string s;
   for (const auto& q : o.quantities)
