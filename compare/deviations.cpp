@@ -9,11 +9,6 @@ namespace granmix::compare {
 
 namespace {
 
-int column(const model::Table& t, const std::string& name) {
-  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
-  return it == t.columns.end() ? -1 : int(it - t.columns.begin());
-}
-
 bool covers(const model::CompareQuantity& q, int species) {
   return q.species.empty() || std::find(q.species.begin(), q.species.end(), std::size_t(species)) != q.species.end();
 }
@@ -55,10 +50,10 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
   // Rows are located by the first column of the theory table: t, or the swept value, or v*.
   if (theory.columns.empty()) return out;
   const std::string& x = theory.columns.front();
-  const int tt = 0, ts = column(theory, "species"), dt = column(dsmc, x), ds = column(dsmc, "species");
+  const int tt = 0, ts = theory.column("species"), dt = dsmc.column(x), ds = dsmc.column("species");
   if (ts < 0 || dt < 0 || ds < 0) return out;
   for (const auto& q : quantities) {
-    const int a = column(theory, q.name), b = column(dsmc, q.name), e = column(dsmc, q.name + "_err");
+    const int a = theory.column(q.name), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];

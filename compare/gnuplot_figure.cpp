@@ -11,15 +11,10 @@ namespace granmix::compare {
 
 namespace {
 
-int column(const model::Table& t, const std::string& name) {
-  const auto it = std::find(t.columns.begin(), t.columns.end(), name);
-  return it == t.columns.end() ? -1 : int(it - t.columns.begin());
-}
-
 // Species in row order within one x value: long-form tables cycle through them.
 std::vector<int> species_cycle(const model::Table& t) {
   std::vector<int> s;
-  const int sc = column(t, "species");
+  const int sc = t.column("species");
   if (sc < 0 || t.rows.empty()) return s;
   for (const auto& row : t.rows) {
     const int k = int(row[sc]);
@@ -48,7 +43,7 @@ std::vector<std::string> species_plots(const model::PlotSettings& p, const model
   plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}')) with linespoints ls 1 pt 6 ps 0.5 "
                               "title 'theory, t = {:g}'",
                               last_block_start(theory), p.y, theory.rows.back()[0]));
-  if (dsmc && std::find(dsmc->columns.begin(), dsmc->columns.end(), p.y + "_err") != dsmc->columns.end())
+  if (dsmc && dsmc->column(p.y + "_err") >= 0)
     plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):(column('{}_err')) with yerrorbars "
                                 "ls 2 pt 7 ps 0.6 title 'DSMC'",
                                 last_block_start(*dsmc), p.y, p.y));
@@ -61,7 +56,7 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
                           const model::Table* dsmc) {
   const model::PlotSettings& p = s.plot;
   FigureResult out;
-  const int xc = column(theory, p.x), yc = column(theory, p.y);
+  const int xc = theory.column(p.x), yc = theory.column(p.y);
   if (xc < 0 || yc < 0) {
     out.message = "no figure: theory.tsv has no column '" + (xc < 0 ? p.x : p.y) + "' ([plot] x/y)";
     return out;
@@ -74,7 +69,7 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
   if (p.logx) gp += "set logscale x\nset format x '10^{%T}'\n";
   if (p.logy) gp += "set logscale y\nset format y '10^{%T}'\n";
   std::vector<std::string> plots = p.x == "species" ? species_plots(p, theory, dsmc) : std::vector<std::string>{};
-  const int sc = column(theory, "species");
+  const int sc = theory.column("species");
   auto has_values = [&](int k) {
     return std::any_of(theory.rows.begin(), theory.rows.end(), [&](const auto& r) { return int(r[sc]) == k && std::isfinite(r[yc]); });
   };
@@ -85,7 +80,7 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
     const int ls = k == 0 ? 9 : 1 + (k - 1) % 4;
     plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} title '{} theory'", cycle.size(),
                                 o, p.x, p.y, ls, label));
-    if (dsmc && column(*dsmc, p.y + "_err") >= 0 && column(*dsmc, p.x) >= 0) {
+    if (dsmc && dsmc->column(p.y + "_err") >= 0 && dsmc->column(p.x) >= 0) {
       const auto d = std::find(dcycle.begin(), dcycle.end(), k);
       if (d != dcycle.end())
         plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):(column('{}_err')) with yerrorbars ls {} "
@@ -96,7 +91,7 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
   // Guide slopes, anchored on the first species curve: t² at its first point, the others at its last.
   std::vector<std::vector<double>> first;
   for (const auto& row : theory.rows)
-    if (!cycle.empty() && int(row[column(theory, "species")]) == cycle.back() && std::isfinite(row[yc])) first.push_back(row);
+    if (!cycle.empty() && int(row[sc]) == cycle.back() && std::isfinite(row[yc])) first.push_back(row);
   if (!first.empty()) {
     const double x0 = first.front()[xc], y0 = first.front()[yc], x1 = first.back()[xc], y1 = first.back()[yc];
     for (const std::string& sl : p.slopes) {

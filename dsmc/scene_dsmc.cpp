@@ -1,6 +1,5 @@
 #include "scene_dsmc.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -27,6 +26,12 @@ std::pair<double, double> weighted(const model::Mixture& mix, const Estimate& e,
     v += w * w * e.err[j * M + k] * e.err[j * M + k];
   }
   return {m, std::sqrt(v)};
+}
+
+// a/b with the relative errors of a and b added in quadrature (the two taken as independent).
+std::pair<double, double> ratio(std::pair<double, double> a, std::pair<double, double> b) {
+  const double q = a.first / b.first;
+  return {q, std::abs(q) * std::hypot(a.second / a.first, b.second / b.first)};
 }
 
 Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult& r) {
@@ -56,23 +61,12 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
       if (o.rescaled_time) push({r.rescaled_time.mean[j], r.rescaled_time.err[j]});
       if (o.temperatures) push(species_value(r.T));
       if (o.msd) push(species_value(r.msd));
-      if (o.msd_ratio) {  // ⟨R_k²⟩/⟨R_1²⟩, relative errors in quadrature (species taken as independent)
-        if (k == 0) {
-          push({nan, nan});
-        } else {
-          const double a = r.msd.mean[j * M + k - 1], b = r.msd.mean[j * M], q = a / b;
-          push({q, std::abs(q) * std::hypot(r.msd.err[j * M + k - 1] / a, r.msd.err[j * M] / b)});
-        }
-      }
+      if (o.msd_ratio)  // ⟨R_k²⟩/⟨R_1²⟩ (v1 Fig. 8)
+        push(k == 0 ? std::pair{nan, nan}
+                    : ratio({r.msd.mean[j * M + k - 1], r.msd.err[j * M + k - 1]}, {r.msd.mean[j * M], r.msd.err[j * M]}));
       if (o.cumulant) push(k > 0 ? species_value(r.cumulant) : std::pair{nan, nan});
-      if (o.gamma) {
-        if (k == 0) {  // γ = T_1/T_2 with relative errors added in quadrature
-          const double a = r.T.mean[j * M], b = r.T.mean[j * M + 1], g = a / b;
-          push({g, g * std::hypot(r.T.err[j * M] / a, r.T.err[j * M + 1] / b)});
-        } else {
-          push({nan, nan});
-        }
-      }
+      if (o.gamma)  // γ = T_1/T_2 (MG Eq. 45 defines γ)
+        push(k == 0 ? ratio({r.T.mean[j * M], r.T.err[j * M]}, {r.T.mean[j * M + 1], r.T.err[j * M + 1]}) : std::pair{nan, nan});
       if (o.tamsd) {
         row.push_back(setup.times[j]);  // lags are the time grid (as in theory.tsv)
         push(k > 0 ? std::pair{r.tamsd.mean[j * M + k - 1], r.tamsd.err[j * M + k - 1]} : std::pair{nan, nan});
@@ -94,10 +88,10 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
   return t;
 }
 
-// Value and error of column `name` at (row of time j, species k) of a long-form DSMC table.
+// Value and error (the column `name_err` that follows it) of column `name` in one row of a DSMC table.
 std::pair<double, double> cell(const Table& t, std::size_t row, const std::string& name) {
-  const auto c = std::size_t(std::find(t.columns.begin(), t.columns.end(), name) - t.columns.begin());
-  if (c + 1 >= t.columns.size()) throw std::logic_error("DSMC table has no column " + name);
+  const int c = t.column(name);
+  if (c < 0 || t.column(name + "_err") != c + 1) throw std::logic_error("DSMC table has no column " + name + " with its error");
   return {t.rows[row][c], t.rows[row][c + 1]};
 }
 
@@ -141,9 +135,7 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
             const auto a = cell(r.table, row_of(first, kk), "msd"), b = cell(r.table, row_of(last, kk), "msd");
             return std::pair{b.first - a.first, std::hypot(a.second, b.second)};  // errors as if independent: an upper bound
           };
-          const auto dk = increment(k), d1 = increment(1);
-          const double q = dk.first / d1.first;
-          push({q, std::abs(q) * std::hypot(dk.second / dk.first, d1.second / d1.first)});
+          push(ratio(increment(k), increment(1)));
         }
       }
       if (o.gamma) push(k == 0 ? cell(r.table, row_of(last, 0), "gamma") : std::pair{nan, nan});

@@ -47,14 +47,19 @@ Tsv read_tsv(const std::filesystem::path& p) {
   return t;
 }
 
+// `granmix theory` on a shipped scene, written to a fresh folder; its theory.tsv.
+Tsv theory_of(const std::string& scene) {
+  const auto d = test::fresh_dir(scene);
+  const auto r = test::run_granmix("theory " + test::scene_path(scene + ".toml") + " --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  return read_tsv(d / scene / "theory.tsv");
+}
+
 }  // namespace
 
 TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln t growth", "[compare]") {
-  const auto d = test::fresh_dir("fig02");
-  const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --out " + d.string());
-  INFO(r.output);
-  REQUIRE(r.code == 0);
-  const Tsv t = read_tsv(d / "bo1-fig02" / "theory.tsv");
+  const Tsv t = theory_of("bo1-fig02");
   REQUIRE(t.comments.size() == 6);
   CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
   CHECK(t.comments[1].find("sha256: ") != std::string::npos);
@@ -68,11 +73,7 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
 }
 
 TEST_CASE("granmix theory bo1-fig05: settled D2/D1 along eps matches the in-process solver", "[compare]") {
-  const auto d = test::fresh_dir("fig05");
-  const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig05.toml") + " --out " + d.string());
-  INFO(r.output);
-  REQUIRE(r.code == 0);
-  const Tsv t = read_tsv(d / "bo1-fig05" / "theory.tsv");
+  const Tsv t = theory_of("bo1-fig05");
   CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio"});
   REQUIRE(t.rows.size() == 102);
   const model::Mixture mix({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}});
