@@ -64,7 +64,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
         return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
       });
       if (match == dsmc.rows.end() || !std::isfinite(row[a]) || !std::isfinite((*match)[b])) continue;
-      Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, t >= q.t_min, true};
+      Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, t >= q.t_min && t <= q.x_max, true};
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);

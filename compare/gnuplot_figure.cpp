@@ -76,10 +76,13 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
   for (std::size_t o = 0; p.x != "species" && o < cycle.size(); ++o) {
     const int k = cycle[o];
     if ((p.y == "D_ratio" && k == 1) || !has_values(k)) continue;  // D_1/D_1 = 1; γ lives on species 0 only
-    const std::string label = k == 0 ? (p.y == "gamma" ? "T1/T2" : "total") : fmt::format("species {}", k);
+    const std::string label = k == 0 ? (p.y == "gamma" ? "T1/T2" : p.y == "gamma_ratio" ? "gamma(n*)/gamma(0)" : "total") : fmt::format("species {}", k);
     const int ls = k == 0 ? 9 : 1 + (k - 1) % 4;
     plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} title '{} theory'", cycle.size(),
                                 o, p.x, p.y, ls, label));
+    if (p.maxwell && theory.column(p.y + "_maxwell") >= 0)
+      plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}_maxwell')) with lines ls {} dt 2 title '{} Maxwell'",
+                                  cycle.size(), o, p.x, p.y, ls, label));
     if (dsmc && dsmc->column(p.y + "_err") >= 0 && dsmc->column(p.x) >= 0) {
       const auto d = std::find(dcycle.begin(), dcycle.end(), k);
       if (d != dcycle.end())

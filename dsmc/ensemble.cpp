@@ -203,6 +203,15 @@ ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, 
   return out;
 }
 
+// One replica's histograms averaged over its sample times (settled runs, DsmcSetup).
+std::vector<double> time_average(const std::vector<double>& per_time, std::size_t times) {
+  const std::size_t block = per_time.size() / times;
+  std::vector<double> out(block, 0.0);
+  for (std::size_t j = 0; j < times; ++j)
+    for (std::size_t i = 0; i < block; ++i) out[i] += per_time[j * block + i] / double(times);
+  return out;
+}
+
 Estimate reduce(const std::vector<ReplicaRecord>& recs, std::vector<double> ReplicaRecord::*field) {
   Estimate e;
   const std::size_t n = (recs.front().*field).size(), R = recs.size();
@@ -264,6 +273,8 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
   out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
   if (s.tamsd_measurement_time > 0.0) out.tamsd = reduce(recs, &ReplicaRecord::tamsd);
+  if (s.distribution_bins > 0 && s.distribution_time_average)
+    for (auto& r : recs) r.distribution = time_average(r.distribution, s.times.size());
   if (s.distribution_bins > 0) out.distribution = reduce(recs, &ReplicaRecord::distribution);
   for (const auto& r : recs) {
     out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;

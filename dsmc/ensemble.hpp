@@ -40,6 +40,9 @@ struct DsmcSetup {
   // mixture temperature T = Σ x_k T_k (MG; m_2 = m_1 for one species): `bins` shells on [0, v_max].
   std::size_t distribution_bins = 0;  // 0: none
   double distribution_vmax = 4.0;
+  // Settled (HCS) runs: Φ_k(v*) is stationary, so each replica's histogram is averaged over the
+  // sample times before the replica statistics are taken (one block [(k * bins) + b]).
+  bool distribution_time_average = false;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores
@@ -56,7 +59,7 @@ struct DsmcResult {
   Estimate T, msd, cumulant;     // [time * M + k]
   Estimate rescaled_time;        // [time]: t_s = ∫ √(T_1/T_1(0)) dt (event-driven methods; NaN for timestep)
   Estimate tamsd;                // [lag * M + k]
-  Estimate distribution;         // [(time * M + k) * bins + b]: Φ_k at the bin centre
+  Estimate distribution;         // [(time * M + k) * bins + b]: Φ_k at the bin centre (time 0 only if averaged)
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble

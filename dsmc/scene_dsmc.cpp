@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "distribution_table.hpp"
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "theory/initial_state.hpp"
@@ -100,30 +101,43 @@ std::pair<double, double> cell(const Table& t, std::size_t row, const std::strin
 DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
                        const std::function<void(std::size_t, std::size_t)>& progress) {
   const model::Sweep& sw = *s.theory.sweep;
-  const bool eps = sw.parameter == model::Sweep::Parameter::eps;
   const auto& o = s.observables;
   const std::size_t M = s.mixture.size();
+  const bool relative = o.gamma && sw.parameter == model::Sweep::Parameter::n_star;
   DsmcRun out;
   Table& t = out.table;
-  t.columns = {eps ? "eps" : "density", "species"};
+  t.columns = {sw.column(), "species"};
   auto add = [&](const char* name) { t.columns.push_back(name), t.columns.push_back(std::string(name) + "_err"); };
   if (o.d_ratio) add("D_ratio");
   if (o.gamma) add("gamma");
+  if (relative) add("gamma_ratio");
   if (o.cumulant) add("c");
   const double nan = Table::missing;
-  for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) {
-    const double x = s.dsmc.at[n];
-    model::Scene point = s;  // one HCS run at this value of the parameter, from the settled ratios
-    point.theory.sweep.reset();
-    if (eps) point.restitution = model::Restitution::constant(M, x);
-    else point.mixture = s.mixture.with_density(sw.species, x);
+  // One HCS run at a value of the parameter, from the settled ratios; each point its own seed derived
+  // from the master seed (point n: seed + 1000003 (n + 1); the n* = 0 reference of gamma_ratio: seed).
+  auto run_at = [&](double x, std::uint64_t point_seed) {
+    model::Scene point = model::sweep_point(s, x);
     point.initial.kind = model::InitialState::Kind::hcs;
     point.observables = model::Observables{};
     point.observables.gamma = o.gamma, point.observables.msd = o.d_ratio, point.observables.cumulant = o.cumulant;
-    // Each point its own seed, derived from the master seed: points are independent samples.
-    const DsmcRun r = run_scene_dsmc(point, fidelity, seed + 1000003 * (n + 1), threads, progress);
-    const std::size_t per_time = M > 1 ? M + 1 : M, first = 0, last = r.table.rows.size() - per_time;
-    auto row_of = [&](std::size_t start, std::size_t k) { return start + (M > 1 ? k : k - 1); };
+    const DsmcRun r = run_scene_dsmc(point, fidelity, point_seed, threads, progress);
+    DsmcResult& a = out.result;
+    a.method = r.result.method, a.species = M, a.replicas = r.result.replicas, a.particles = r.result.particles;
+    a.trials += r.result.trials, a.accepted += r.result.accepted, a.seconds += r.result.seconds;
+    a.seconds_setup += r.result.seconds_setup, a.seconds_loop += r.result.seconds_loop, a.seconds_sample += r.result.seconds_sample;
+    return r;
+  };
+  const std::size_t per_time = M > 1 ? M + 1 : M;
+  auto row_of = [&](std::size_t start, std::size_t k) { return start + (M > 1 ? k : k - 1); };
+  std::pair<double, double> gamma0{nan, nan};
+  if (relative) {
+    const DsmcRun r0 = run_at(0.0, seed);
+    gamma0 = cell(r0.table, row_of(r0.table.rows.size() - per_time, 0), "gamma");
+  }
+  for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) {
+    const double x = s.dsmc.at[n];
+    const DsmcRun r = run_at(x, seed + 1000003 * (n + 1));
+    const std::size_t first = 0, last = r.table.rows.size() - per_time;
     for (std::size_t k = (o.gamma ? 0 : 1); k <= M; ++k) {
       std::vector<double> row = {x, double(k)};
       auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
@@ -138,14 +152,12 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
           push(ratio(increment(k), increment(1)));
         }
       }
-      if (o.gamma) push(k == 0 ? cell(r.table, row_of(last, 0), "gamma") : std::pair{nan, nan});
+      const auto gamma = k == 0 && o.gamma ? cell(r.table, row_of(last, 0), "gamma") : std::pair{nan, nan};
+      if (o.gamma) push(gamma);
+      if (relative) push(k == 0 ? ratio(gamma, gamma0) : std::pair{nan, nan});  // independent runs: errors add in quadrature
       if (o.cumulant) push(k == 0 ? std::pair{nan, nan} : cell(r.table, row_of(last, k), "c"));
       t.rows.push_back(std::move(row));
     }
-    DsmcResult& a = out.result;
-    a.method = r.result.method, a.species = M, a.replicas = r.result.replicas, a.particles = r.result.particles;
-    a.trials += r.result.trials, a.accepted += r.result.accepted, a.seconds += r.result.seconds;
-    a.seconds_setup += r.result.seconds_setup, a.seconds_loop += r.result.seconds_loop, a.seconds_sample += r.result.seconds_sample;
   }
   return out;
 }
@@ -186,10 +198,12 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   if (d.method == Method::timestep && d.aged)
     throw InputError(s.file + ": dsmc.method = \"timestep\" has no aged start (allowed: auto, direct, lowrank, bird)");
   d.msd = s.observables.needs_msd();
-  d.cumulant = s.observables.cumulant;
+  const bool settled_distribution = s.observables.distribution_settled;
+  d.cumulant = s.observables.cumulant || settled_distribution;  // Δ_k needs the simulation's c_k
   d.rescale = s.dsmc.rescale;
   d.distribution_bins = s.observables.distribution_bins;
   d.distribution_vmax = s.observables.distribution_vmax;
+  d.distribution_time_average = settled_distribution;
   if (s.observables.tamsd) {
     d.tamsd_measurement_time = s.observables.tamsd_measurement_time * unit;
     d.tamsd_lags = d.times;
@@ -200,6 +214,10 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.threads = threads;
   d.progress = progress;
   run.result = run_ensemble(d);
+  if (settled_distribution) {
+    run.table = settled_distribution_table(s, d, run.result);
+    return run;
+  }
   run.table = make_table(s, d, run.result);
   theory::rescale_time_columns(run.table, 1.0 / unit);
   if (d.distribution_bins > 0) {

@@ -14,7 +14,7 @@ namespace granmix::dsmc {
 
 struct DsmcRun {
   model::Table table;
-  model::Table distribution;  // t, species, v, phi, phi_err (empty unless the scene asks for it)
+  model::Table distribution;  // t, species, v, phi, phi_err per sample time (empty unless asked; settled: in table)
   DsmcResult result;
   DsmcSetup setup;
 };

@@ -1,5 +1,6 @@
 #pragma once
-// Mixture generators: the power-law polydisperse mixtures of v1 Fig. 8 / v2 Fig. 4.
+// Mixture generators: the power-law polydisperse mixtures of v1 Fig. 8 / v2 Fig. 4, the exponential
+// one of v2 Fig. 6 / Table 1, and Montanero–Garzó's binary parameters.
 #include <cstddef>
 
 #include "mixture.hpp"
@@ -32,5 +33,23 @@ namespace granmix::model {
 // n* = n σ_12³. Units: m_2 = 1, σ_22 = 1. With n* = 0 (dilute) the total density is set to
 // n σ_12³ = 1; every ratio is independent of it, absolute times are not.
 Mixture montanero_garzo_binary(double mu, double delta, double w, double n_star);
+
+}  // namespace granmix::model
+
+namespace granmix::model {
+
+// Particle counts N_k = floor(N1 e^(−decay (k−1))), k = 1…species (v2 Sec. III, Fig. 6 / Table 1: N1 = 999,
+// decay = 0.01, 691 species, about 1e5 particles); m_k = k m1, σ_k = σ1 k^(diameter_exponent), number
+// densities n_k = total_density N_k / Σ N. Species whose count floors to zero are dropped.
+struct Exponential {
+  double n1_particles = 999;
+  double decay = 0.01;
+  std::size_t species = 691;
+  double total_density = 0.1;
+  double diameter_exponent = 1.0 / 3.0;
+  double mass1 = 1.0, diameter1 = 1.0;
+};
+
+Mixture exponential_mixture(const Exponential& e);
 
 }  // namespace granmix::model

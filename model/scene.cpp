@@ -18,10 +18,23 @@ namespace {
 constexpr double huge = 1e300;
 
 Mixture read_mixture(TomlFields& f) {
-  const int forms = int(f.has("species")) + int(f.has("power_law")) + int(f.has("montanero_garzo"));
+  const int forms = int(f.has("species")) + int(f.has("power_law")) + int(f.has("montanero_garzo")) + int(f.has("exponential"));
   if (forms != 1)
-    f.fail("species", "give exactly one of 'species' (a list), 'power_law' or 'montanero_garzo' (tables)",
-           "species, power_law, montanero_garzo");
+    f.fail("species", "give exactly one of 'species' (a list), 'power_law', 'exponential' or 'montanero_garzo' (tables)",
+           "species, power_law, exponential, montanero_garzo");
+  if (f.has("exponential")) {
+    TomlFields x = f.sub("exponential");
+    Exponential e;  // v2 Fig. 6 / Table 1 (model/mixture_generators.hpp)
+    e.n1_particles = x.number("n1_particles", 1.0, 1e12);
+    e.decay = x.number("decay", 0.0, 100.0);
+    e.species = x.count("species", 1, 1000000, std::nullopt);
+    e.total_density = x.positive("total_density");
+    e.diameter_exponent = x.number("diameter_exponent", 0.0, 1.0, 1.0 / 3.0);
+    e.mass1 = x.positive("mass1", 1.0);
+    e.diameter1 = x.positive("diameter1", 1.0);
+    x.finish();
+    return exponential_mixture(e);
+  }
   const bool law = f.has("power_law");
   if (f.has("montanero_garzo")) {
     TomlFields m = f.sub("montanero_garzo");
@@ -159,6 +172,7 @@ Observables read_observables(TomlFields& f) {
     TomlFields d = f.sub("distribution");
     o.distribution_bins = d.count("bins", 1, 10000, 40);
     o.distribution_vmax = d.number("v_max", 1e-3, 100.0, 4.0);
+    o.distribution_settled = d.flag("settled", false);
     d.finish();
   }
   if (f.has("tamsd")) {
@@ -183,11 +197,13 @@ TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   if (f.has("sweep")) {
     TomlFields w = f.sub("sweep");
     Sweep sw;
-    const std::string p = w.choice("parameter", {"eps", "density"});
-    sw.parameter = p == "eps" ? Sweep::Parameter::eps : Sweep::Parameter::density;
+    const std::string p = w.choice("parameter", {"eps", "density", "n_star"});
+    sw.parameter = p == "eps" ? Sweep::Parameter::eps : p == "density" ? Sweep::Parameter::density : Sweep::Parameter::n_star;
     if (sw.parameter == Sweep::Parameter::density) {
       sw.species = w.count("species", 1, mix.size(), std::nullopt) - 1;
       sw.values = grid(w, "spacing", std::numeric_limits<double>::min(), huge);
+    } else if (sw.parameter == Sweep::Parameter::n_star) {
+      sw.values = grid(w, "spacing", 0.0, 1.0);  // n σ12³ <= 1: Carnahan–Starling χ is used well below close packing
     } else {
       sw.values = grid(w, "spacing", 0.0, 1.0);
     }
@@ -222,6 +238,18 @@ void check_combinations(const Scene& s, TomlFields& top) {
   if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps)
     for (double x : s.dsmc.at)
       if (x > 1.0) top.fail("dsmc", "dsmc.at holds restitution coefficients here", "values in [0, 1]");
+  if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::n_star) {
+    if (s.mixture.size() != 2) top.fail("theory", "an n_star sweep needs a binary mixture (n* = n σ12³)", "two species");
+    for (double x : s.dsmc.at)
+      if (x <= 0.0 || x > 1.0) top.fail("dsmc", "dsmc.at holds reduced densities n* here (n* = 0 is always run)", "values in (0, 1]");
+  }
+  if (o.distribution_settled) {
+    if (s.initial.kind != InitialState::Kind::hcs || s.mixture.size() != 2 || s.restitution.is_viscoelastic() || s.theory.sweep)
+      top.fail("observables", "distribution.settled compares the first-Sonine HCS of a binary mixture",
+               "two species, initial.temperatures = \"hcs\", constant restitution, no sweep");
+    if (o.temperatures || o.needs_msd() || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant)
+      top.fail("observables", "a settled distribution scene is a table over v*: no other observable", "distribution only");
+  }
   if (s.theory.sweep && s.theory.sweep->parameter == Sweep::Parameter::eps && s.restitution.is_viscoelastic())
     top.fail("theory", "an ε sweep needs a constant restitution coefficient", "collisions.restitution = number");
 }
@@ -256,13 +284,14 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     if (!e.is_table()) f.fail_at(e, "quantities", "element is not a table", allowed);
     TomlFields q(*e.as_table(), f.file(), "compare.quantities[" + std::to_string(out.size() + 1) + "]");
     CompareQuantity c;
-    c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
+    c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
     if (q.has("species"))
       for (double v : q.numbers("species", 0, double(species))) c.species.push_back(static_cast<std::size_t>(v));
     c.t_min = q.number("t_min", 0.0, 1e300, 0.0);
+    c.x_max = q.number("x_max", 0.0, 1e300, 1e300);
     c.why = q.text("why");  // every tolerance says why it is what it is
     q.finish();
     out.push_back(c);
@@ -276,6 +305,7 @@ PlotSettings read_plot(TomlFields& f) {
   p.y = f.choice("y", {"msd", "msd_ratio", "T", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "phi", "delta", "G"}, "msd");
   p.logx = f.flag("logx", false);
   p.logy = f.flag("logy", false);
+  p.maxwell = f.flag("maxwell", false);
   p.xlabel = f.text("xlabel", p.x);
   p.ylabel = f.text("ylabel", p.y);
   p.key = f.choice("key", {"top left", "top right", "bottom left", "bottom right"}, "top left");
@@ -385,6 +415,24 @@ Scene load_scene(const std::string& path) {
     std::sort(v.begin(), v.end());
   }
   return s;
+}
+
+Scene sweep_point(const Scene& s, double x) {
+  Scene p = s;
+  p.theory.sweep.reset();
+  switch (s.theory.sweep->parameter) {
+    case Sweep::Parameter::eps: p.restitution = Restitution::constant(s.mixture.size(), x); break;
+    case Sweep::Parameter::density: p.mixture = s.mixture.with_density(s.theory.sweep->species, x); break;
+    case Sweep::Parameter::n_star: {  // all densities scaled so that n σ12³ = x (x = 0: the dilute gas as given)
+      p.enskog = x > 0.0;
+      if (x > 0.0) {
+        const double s12 = s.mixture.sigma(0, 1), scale = x / (s.mixture.total_density() * s12 * s12 * s12);
+        for (std::size_t k = 0; k < s.mixture.size(); ++k) p.mixture = p.mixture.with_density(k, s.mixture[k].density * scale);
+      }
+      break;
+    }
+  }
+  return p;
 }
 
 }  // namespace granmix::model

@@ -22,6 +22,9 @@ struct Observables {
   bool tamsd = false;          // columns lag, tamsd (lags = the time grid)
   std::size_t distribution_bins = 0;  // DSMC: Φ_k(v*) histogram -> distribution.tsv (0: none)
   double distribution_vmax = 4.0;
+  // The settled Φ_k(v*), Δ_k(v*), G_k(v*) (MG Figs. 3, 7): theory.tsv and dsmc.tsv are tables over
+  // v* (bin centres) instead of time; the DSMC histogram is averaged over the [time] samples.
+  bool distribution_settled = false;
   bool cumulant = false;       // column c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (DSMC; theory with the Sonine solver)
   double tamsd_measurement_time = 0.0;
   std::size_t tamsd_tracers = 100;  // DSMC: tracer particles per species
@@ -29,9 +32,12 @@ struct Observables {
 };
 
 struct Sweep {
-  enum class Parameter { eps, density } parameter = Parameter::eps;
+  // eps: the restitution coefficient of every pair; density: n_k of one species; n_star: the reduced
+  // density n σ_12³ of MG (Enskog χ, MG Eq. 26; 0 = dilute), all densities scaled together (MG Fig. 6).
+  enum class Parameter { eps, density, n_star } parameter = Parameter::eps;
   std::size_t species = 0;  // density: 0-based species whose density is swept
   std::vector<double> values;
+  const char* column() const { return parameter == Parameter::eps ? "eps" : parameter == Parameter::density ? "density" : "n_star"; }
 };
 
 struct TheorySettings {
@@ -69,6 +75,7 @@ struct CompareQuantity {
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)
   double t_min = 0.0;           // points at t < t_min are reported but not judged
+  double x_max = 1e300;         // nor points whose first column (t, v*, swept value) exceeds x_max
   std::string why;              // the reason for the tolerance, carried into report.json
 };
 
@@ -77,6 +84,7 @@ struct PlotSettings {
   std::string x = "t", y = "msd", xlabel, ylabel;  // x = "species": the values at the last time
   std::string key = "top left";  // legend position
   bool logx = false, logy = false;
+  bool maxwell = false;  // also draw theory's `<y>_maxwell` column dashed (MG Fig. 7's Maxwell–Boltzmann lines)
   std::vector<std::string> slopes;  // guide lines: "2", "1", "1/6", "log"
 };
 
@@ -99,5 +107,8 @@ struct Scene {
 
 // Throws InputError("file:line: key: what is wrong (allowed: …)").
 Scene load_scene(const std::string& path);
+
+// The scene at one value x of its sweep (mixture, restitution, Enskog as the parameter says), sweep removed.
+Scene sweep_point(const Scene& scene, double x);
 
 }  // namespace granmix::model

@@ -7,6 +7,7 @@
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
 #include "msd.hpp"
+#include "shell_average.hpp"
 #include "sonine_hcs.hpp"
 #include "tamsd.hpp"
 #include "time_unit.hpp"
@@ -24,34 +25,60 @@ MomentMethod moment_method(const std::string& name) {
 }
 
 // Settled quantities along a parameter: D_k/D_1 (v1 Eq. 19), the first-Sonine γ = T_1/T_2 with the
-// Maxwellian γ beside it, and the cumulants c_k (MG App. A). Species 0 rows carry γ.
+// Maxwellian γ beside it, and the cumulants c_k (MG App. A). Species 0 rows carry γ; along n* also
+// γ(α, n*)/γ(α, 0) (MG Fig. 6).
 Table sweep_table(const model::Scene& s) {
   const model::Sweep& sw = *s.theory.sweep;
   const auto& o = s.observables;
   const std::size_t N = s.mixture.size();
+  const bool relative = o.gamma && sw.parameter == model::Sweep::Parameter::n_star;
   Table t;
-  t.columns = {sw.parameter == model::Sweep::Parameter::eps ? "eps" : "density", "species"};
+  t.columns = {sw.column(), "species"};
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
+  if (relative) t.columns.push_back("gamma_ratio");
   if (o.cumulant) t.columns.push_back("c");
+  auto sonine_of = [](const model::Scene& p, bool maxwell) {
+    const auto chi = p.enskog ? model::enskog_contact_values(p.mixture) : model::dilute_contact_values(p.mixture.size());
+    return sonine_hcs(p.mixture, p.restitution, chi, maxwell);
+  };
+  const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0), false).gamma() : nan;
   for (double x : sw.values) {
-    const bool eps = sw.parameter == model::Sweep::Parameter::eps;
-    const model::Mixture mix = eps ? s.mixture : s.mixture.with_density(sw.species, x);
-    const model::Restitution law = eps ? model::Restitution::constant(mix.size(), x) : s.restitution;
-    const CollisionRates rates = scene_rates(s, mix, law);
-    const SettledDiffusion d = o.d_ratio ? settled_diffusion(rates) : SettledDiffusion{};
+    const model::Scene p = model::sweep_point(s, x);
+    const SettledDiffusion d = o.d_ratio ? settled_diffusion(scene_rates(p, p.mixture, p.restitution)) : SettledDiffusion{};
     SonineHcs sonine, maxwell;
-    if (o.gamma || o.cumulant) {
-      const auto chi = s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(N);
-      sonine = sonine_hcs(mix, law, chi);
-      if (o.gamma) maxwell = sonine_hcs(mix, law, chi, true);
-    }
+    if (o.gamma || o.cumulant) sonine = sonine_of(p, false);
+    if (o.gamma) maxwell = sonine_of(p, true);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
+      if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
       t.rows.push_back(std::move(row));
+    }
+  }
+  return t;
+}
+
+// The settled first-Sonine distribution on the DSMC bins (MG Figs. 3, 7), each value the shell
+// average of what a histogram bin estimates: Φ_k (Eq. 27), the Maxwellian with the same λ_k, Δ_k from
+// those two as MG Eq. (27) defines it (→ Eq. 28 for narrow bins), G_k = exp(2β_k v*/ζ*) Φ_k (Eq. 30)
+// at the bin centre v*, and the Maxwellian G.
+Table distribution_table(const model::Scene& s) {
+  const auto& o = s.observables;
+  const SonineHcs h =
+      sonine_hcs(s.mixture, s.restitution, s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size()));
+  Table t;
+  t.columns = {"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"};
+  const double width = o.distribution_vmax / double(o.distribution_bins);
+  for (std::size_t b = 0; b < o.distribution_bins; ++b) {
+    const double lo = b * width, hi = lo + width, v = 0.5 * (lo + hi);
+    for (std::size_t k = 0; k < s.mixture.size(); ++k) {
+      const double phi = shell_average([&](double u) { return h.phi(k, u); }, lo, hi);
+      const double maxwell = shell_average([&](double u) { return maxwellian_phi(h.lambda[k], u); }, lo, hi);
+      const double tail = std::exp(h.tail_exponent(k) * v);
+      t.rows.push_back({v, double(k + 1), phi, maxwell, 2.0 / h.c[k] * (phi / maxwell - 1.0), tail * phi, tail * maxwell});
     }
   }
   return t;
@@ -187,6 +214,8 @@ TheoryResult run_theory(const model::Scene& scene) {
   const model::Scene& s = scaled;
   if (s.theory.sweep) {
     r.table = sweep_table(s);
+  } else if (s.observables.distribution_settled) {
+    r.table = distribution_table(s);
   } else {
     const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
     const std::vector<Sample> samples = s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, r.stats);

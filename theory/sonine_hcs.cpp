@@ -162,9 +162,10 @@ double SonineHcs::delta(std::size_t k, double v) const {
   return 0.5 * l * l * v2 * v2 - 2.5 * l * v2 + 15.0 / 8.0;  // MG Eq. (28)
 }
 
+double maxwellian_phi(double lambda, double v) { return std::pow(lambda / std::numbers::pi, 1.5) * std::exp(-lambda * v * v); }
+
 double SonineHcs::phi(std::size_t k, double v) const {
-  const double l = lambda[k];
-  return std::pow(l / std::numbers::pi, 1.5) * std::exp(-l * v * v) * (1.0 + 0.5 * c[k] * delta(k, v));  // MG Eq. (27)
+  return maxwellian_phi(lambda[k], v) * (1.0 + 0.5 * c[k] * delta(k, v));  // MG Eq. (27)
 }
 
 double SonineHcs::G(std::size_t k, double v) const { return std::exp(tail_exponent(k) * v) * phi(k, v); }  // MG Eq. (30)

@@ -28,6 +28,9 @@ struct SonineHcs {
   double G(std::size_t k, double v) const;
 };
 
+// The Maxwellian of MG Eq. (27) with c = 0: (λ/π)^(3/2) exp(−λ v*²).
+double maxwellian_phi(double lambda, double v);
+
 // How the temperature ratios are found: automatic = bracketing for two species, multiroot above;
 // multiroot can be forced for two species (to check one solver against the other).
 enum class SonineSolver { automatic, multiroot };

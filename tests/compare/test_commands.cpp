@@ -2,6 +2,7 @@
 // forms and with --json, checked against values computed in-process and against closed forms.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <numbers>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -265,4 +266,68 @@ TEST_CASE("granmix validate: every scene of a folder - summary.tsv and summary.j
   CHECK(bad.code == 1);
   CHECK(bad.output.find("ERROR") != std::string::npos);
   CHECK(std::filesystem::exists(d / "out2" / "mg-fig01" / "report.json"));
+}
+
+TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised - G = exp(2 beta v/zeta) Phi", "[compare]") {
+  const Tsv t = theory_of("mg-fig07-alpha0.5");
+  CHECK(t.columns == std::vector<std::string>{"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"});
+  const model::Mixture mix = model::montanero_garzo_binary(4, 0.5, 1, 0);
+  const auto h = theory::sonine_hcs(mix, model::Restitution::constant(2, 0.5), model::dilute_contact_values(2));
+  double norm[2] = {0, 0};
+  for (std::size_t r = 0; r < t.rows.size(); ++r) {
+    const int k = int(t.at(r, "species")) - 1;
+    const double v = t.at(r, "v"), lo = v - 0.05, hi = v + 0.05;  // bins of 0.1
+    norm[k] += t.at(r, "phi") * 4.0 / 3.0 * std::numbers::pi * (hi * hi * hi - lo * lo * lo);
+    CHECK(t.at(r, "G") == Approx(std::exp(h.tail_exponent(k) * v) * t.at(r, "phi")).epsilon(1e-13));
+    // Δ of the shell averages (what a histogram bin measures), against composite Simpson on 2000
+    // intervals, whose error is far below the 1e-9 asked of the 5-point rule.
+    auto shell = [&](auto f) {
+      double a = 0.0;
+      for (int i = 0; i <= 2000; ++i) {
+        const double u = lo + (hi - lo) * i / 2000.0;
+        a += (i == 0 || i == 2000 ? 1.0 : (i % 2 ? 4.0 : 2.0)) * u * u * f(u);
+      }
+      return a;
+    };
+    const double ratio = shell([&](double u) { return h.phi(k, u); }) / shell([&](double u) { return theory::maxwellian_phi(h.lambda[k], u); });
+    CHECK(t.at(r, "delta") == Approx(2.0 / h.c[k] * (ratio - 1.0)).epsilon(1e-9).margin(1e-9));
+  }
+  // ∫Φ d³v* = 1 (MG Eq. 27 is normalised; the Sonine term integrates to zero); the tail beyond v* = 3
+  // is below 1e-12 for species 1 (λ1 ≈ 4) and ~1e-5 for species 2 (λ2 ≈ 1.25, Gauss–Legendre per shell).
+  CHECK(norm[0] == Approx(1.0).epsilon(1e-10));
+  CHECK(norm[1] == Approx(1.0).epsilon(1e-4));
+}
+
+TEST_CASE("granmix theory mg-fig06: gamma(n*)/gamma(0) with Enskog chi against the in-process Sonine solver", "[compare]") {
+  const Tsv t = theory_of("mg-fig06-alpha0.6");
+  CHECK(t.columns == std::vector<std::string>{"n_star", "species", "gamma", "gamma_maxwell", "gamma_ratio"});
+  const auto law = model::Restitution::constant(2, 0.6);
+  const double g0 = theory::sonine_hcs(model::montanero_garzo_binary(2, 0.5, 2, 0), law, model::dilute_contact_values(2)).gamma();
+  CHECK(t.at(0, "n_star") == 0.0);
+  CHECK(t.at(0, "gamma_ratio") == 1.0);
+  for (std::size_t r = 3; r < t.rows.size(); r += 15) {  // species 0 rows (γ) of every fifth n*
+    const double n = t.at(r, "n_star");
+    const model::Mixture mix = model::montanero_garzo_binary(2, 0.5, 2, n);  // MG's parameters at this n*
+    const double g = theory::sonine_hcs(mix, law, model::enskog_contact_values(mix)).gamma();
+    CHECK(t.at(r, "gamma_ratio") == Approx(g / g0).epsilon(1e-12));  // root finder tolerance well below
+  }
+}
+
+TEST_CASE("settled distribution of an elastic binary: the DSMC histogram is the Maxwellian within 4 sigma", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("settled-distribution");
+  // Elastic and mechanically different (μ = 4): the settled state is exactly Maxwellian at equal
+  // temperatures, so theory's Φ (c = 0) is exact and every bin must agree within its standard error.
+  // v* <= 1.2: species 1 (λ1 = 5) still fills the last bin (~150 particles per sample).
+  test::write_file(d / "s.toml", "[scene]\nname = \"s\"\n[mixture]\nmontanero_garzo = { mu = 4, delta = 0.5, w = 1 }\n"
+                                 "[collisions]\nrestitution = 1\n[initial]\ntemperatures = \"hcs\"\n"
+                                 "[time]\nunit = \"mg\"\nstart = 5\nend = 100\npoints = 20\nspacing = \"linear\"\n"
+                                 "[observables]\ndistribution = { bins = 24, v_max = 1.2, settled = true }\n"
+                                 "[dsmc]\nquick = { particles = 4000, replicas = 8 }\npaper = { particles = 4000, replicas = 8 }\n"
+                                 "[compare]\nquantities = [{ name = \"phi\", relative = 0, z = 4, why = \"exact Maxwellian\" }]\n");
+  const auto r = test::run_granmix("compare " + (d / "s.toml").string() + " --out " + d.string());
+  INFO(r.output);
+  CHECK(r.code == 0);  // every bin of both species within 4 standard errors
+  const Tsv ds = read_tsv(d / "s" / "dsmc.tsv");
+  CHECK(ds.columns == std::vector<std::string>{"v", "species", "phi", "phi_err", "delta", "delta_err", "G", "G_err"});
+  CHECK(ds.rows.size() == 48);
 }

@@ -13,7 +13,6 @@
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/temperature_history.hpp"
-#include "theory/temperature_history.hpp"
 
 using namespace granmix;
 using namespace granmix::dsmc;

@@ -5,6 +5,7 @@
 
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
+#include "model/scene.hpp"
 
 using namespace granmix::model;
 
@@ -54,4 +55,35 @@ TEST_CASE("Montanero-Garzo binary parameters", "[model]") {
   CHECK(mix[0].density / mix[1].density == Approx(2));
   CHECK(mix[0].diameter / mix[1].diameter == Approx(2));
   CHECK(mix.total_density() * std::pow(mix.sigma(0, 1), 3) == Approx(0.1).epsilon(1e-14));
+}
+
+TEST_CASE("exponential mixture of v2 Fig. 6: 691 species, counts floor(999 e^-0.01(k-1)), n = 0.1", "[model]") {
+  const Mixture mix = exponential_mixture(Exponential{});
+  REQUIRE(mix.size() == 691);
+  double N = 0.0;  // the paper's count, summed here independently of the generator
+  for (int k = 1; k <= 691; ++k) N += std::floor(999.0 * std::exp(-0.01 * (k - 1)));
+  CHECK(N == 99966.0);
+  CHECK(mix.total_density() == Approx(0.1).epsilon(1e-14));
+  for (int k : {1, 2, 100, 691}) {
+    CHECK(mix[k - 1].mass == Approx(k));
+    CHECK(mix[k - 1].diameter == Approx(std::cbrt(double(k))).epsilon(1e-14));
+    // n_k / n = N_k / N: the particle count a DSMC of N particles gives species k.
+    CHECK(mix[k - 1].density / 0.1 * N == Approx(std::floor(999.0 * std::exp(-0.01 * (k - 1)))).epsilon(1e-12));
+  }
+  // Counts that floor to zero end the list: N1 = 5, decay 1 keeps 5, 1 (e^-1 5 = 1.84), then 0.
+  CHECK(exponential_mixture(Exponential{5, 1.0, 10, 0.1}).size() == 2);
+}
+
+TEST_CASE("sweep point along n*: n sigma12^3 = n*, Enskog on, ratios kept; n* = 0 is the dilute gas", "[model]") {
+  Scene s;
+  s.mixture = montanero_garzo_binary(2, 0.5, 2, 0);
+  s.restitution = Restitution::constant(2, 0.6);
+  s.theory.sweep = Sweep{Sweep::Parameter::n_star, 0, {0.0, 0.3}};
+  const Scene p = sweep_point(s, 0.3), q = sweep_point(s, 0.0);
+  CHECK(p.enskog);
+  CHECK(!q.enskog);
+  CHECK(!p.theory.sweep);
+  CHECK(p.mixture.total_density() * std::pow(p.mixture.sigma(0, 1), 3) == Approx(0.3).epsilon(1e-14));
+  CHECK(p.mixture[0].density / p.mixture[1].density == Approx(0.5).epsilon(1e-14));
+  CHECK(q.mixture.total_density() == s.mixture.total_density());
 }
