@@ -10,16 +10,18 @@ inline void collide(Particles& p, std::size_t a, std::size_t b, double ma, doubl
                     double g_dot_e) {
   const double impulse = (1.0 + eps) * g_dot_e / (ma + mb);  // J / (m_a m_b) with J = m_eff (1+ε) g·e
   const double da = mb * impulse, db = ma * impulse;
-  p.vx[a] -= da * e.x, p.vy[a] -= da * e.y, p.vz[a] -= da * e.z;
-  p.vx[b] += db * e.x, p.vy[b] += db * e.y, p.vz[b] += db * e.z;
+  Vec3 &va = p.v[a], &vb = p.v[b];
+  va.x -= da * e.x, va.y -= da * e.y, va.z -= da * e.z;
+  vb.x += db * e.x, vb.y += db * e.y, vb.z += db * e.z;
 }
 
 // v1 Eq. (15): before a particle's velocity changes, its free flight since the last collision is
 // added to its displacement.
 inline void advance_displacement(Particles& p, std::size_t a, double t) {
-  const double dt = t - p.t_last[a];
-  p.rx[a] += p.vx[a] * dt, p.ry[a] += p.vy[a] * dt, p.rz[a] += p.vz[a] * dt;
-  p.t_last[a] = t;
+  Particles::Flight& f = p.flight[a];
+  const double dt = t - f.t_last;
+  f.r.x += p.v[a].x * dt, f.r.y += p.v[a].y * dt, f.r.z += p.v[a].z * dt;
+  f.t_last = t;
 }
 
 }  // namespace granmix::dsmc

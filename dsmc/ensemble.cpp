@@ -39,7 +39,7 @@ namespace {
 
 // Everything one replica records, [time * M + k].
 struct ReplicaRecord {
-  std::vector<double> T, msd, cumulant, pair_collisions, rescaled_time, tamsd, distribution;
+  std::vector<double> T, msd, cumulant, species_collisions, pair_collisions, rescaled_time, tamsd, distribution;
   std::uint64_t trials = 0, accepted = 0, steps = 0;
   double seconds_setup = 0.0, seconds_loop = 0.0, seconds_sample = 0.0;
 };
@@ -57,7 +57,7 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
   for (std::size_t k = 0; k < M; ++k) {
     double v2 = 0.0, v4 = 0.0, r2 = 0.0;
     for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
-      const double w = p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
+      const double w = norm2(p.v[j]);
       v2 += w, v4 += w * w;
       if (s.msd) {
         const Vec3 r = displacement(p, j, t);
@@ -70,6 +70,7 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
     // c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (physics.md §6: c = 2a₂).
     if (s.cumulant) out.cumulant.push_back(2.0 * (0.6 * (v4 / n) / ((v2 / n) * (v2 / n)) - 1.0));
   }
+  for (std::uint64_t v : c.species_collisions) out.species_collisions.push_back(double(v));
   for (std::uint64_t v : c.pair_collisions) out.pair_collisions.push_back(double(v));
   if (s.distribution_bins > 0) {
     // MG: Φ_k(v*) = v0³ f_k(v) / n_k, estimated as count / (N_k × shell volume in v* space).
@@ -81,7 +82,7 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
     for (std::size_t k = 0; k < M; ++k) {
       std::vector<double> h(B, 0.0);
       for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
-        const double v = std::sqrt(p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j]) / v0;
+        const double v = std::sqrt(norm2(p.v[j])) / v0;
         const auto b = static_cast<std::size_t>(v / width);
         if (b < B) h[b] += 1.0;
       }
@@ -237,7 +238,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   // V from the total: n = N / V. Species densities are then N_k / V (counts_for keeps them
   // proportional to the mixture's n_k up to rounding).
   const double V = double(N) / s.mixture.total_density();
-  const PairTable pairs(s.mixture, s.chi.empty() ? model::dilute_contact_values(M) : s.chi, V);
+  const PairTable pairs(s.mixture, s.chi, V);  // empty chi: dilute
   const Method method = s.method == Method::automatic ? (M <= 8 ? Method::direct : Method::lowrank) : s.method;
 
   std::vector<ReplicaRecord> recs(s.replicas);
@@ -270,6 +271,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   out.T = reduce(recs, &ReplicaRecord::T);
   if (s.msd) out.msd = reduce(recs, &ReplicaRecord::msd);
   if (s.cumulant) out.cumulant = reduce(recs, &ReplicaRecord::cumulant);
+  out.species_collisions = reduce(recs, &ReplicaRecord::species_collisions);
   out.pair_collisions = reduce(recs, &ReplicaRecord::pair_collisions);
   out.rescaled_time = reduce(recs, &ReplicaRecord::rescaled_time);
   if (s.tamsd_measurement_time > 0.0) out.tamsd = reduce(recs, &ReplicaRecord::tamsd);

@@ -60,7 +60,8 @@ struct DsmcResult {
   Estimate rescaled_time;        // [time]: t_s = ∫ √(T_1/T_1(0)) dt (event-driven methods; NaN for timestep)
   Estimate tamsd;                // [lag * M + k]
   Estimate distribution;         // [(time * M + k) * bins + b]: Φ_k at the bin centre (time 0 only if averaged)
-  Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, cumulative from t = 0
+  Estimate species_collisions;   // [time * M + k]: collisions species k took part in (i = k twice), from t = 0
+  Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, from t = 0; empty above 64 species
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
   double seconds = 0.0;          // wall time of the ensemble
   // CPU time by phase, summed over replicas: particle set-up (and aging), the event loop (pair

@@ -15,9 +15,22 @@
 
 namespace granmix::dsmc {
 
+// Pair counts are kept up to this many species: the M×M table (and one copy per sample time) would
+// cost more than the simulation beyond it (691 species: 3.8 MB touched at random per collision).
+constexpr std::size_t pair_count_species_limit = 64;
+
 struct Counters {
   std::uint64_t trials = 0, accepted = 0, refreshes = 0;
-  std::vector<std::uint64_t> pair_collisions;  // [i*M + k], i <= k
+  std::vector<std::uint64_t> species_collisions;  // [k]: collisions species k took part in (i = k counts twice)
+  std::vector<std::uint64_t> pair_collisions;     // [i*M + k], i <= k; empty above pair_count_species_limit
+  void reset(std::size_t M) {
+    species_collisions.assign(M, 0);
+    pair_collisions.assign(M <= pair_count_species_limit ? M * M : 0, 0);
+  }
+  void count(std::size_t i, std::size_t k) {
+    ++accepted, ++species_collisions[i], ++species_collisions[k];
+    if (!pair_collisions.empty()) ++pair_collisions[i <= k ? i * species_collisions.size() + k : k * species_collisions.size() + i];
+  }
 };
 
 template <class Selector>
@@ -28,7 +41,7 @@ class EventLoop {
   EventLoop(Particles& p, Selector& sel, const model::Restitution& law, Rng& rng, Counters& c, std::uint64_t refresh_every)
       : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every), energy_(kinetic_energy(p)),
         e1_(species_energy(p, 0)), e1_start_(e1_) {
-    c_.pair_collisions.assign(p.species() * p.species(), 0);
+    c_.reset(p.species());
   }
 
   double time() const { return t_; }
@@ -50,8 +63,8 @@ class EventLoop {
     t_ = 0.0;
     ts_ = 0.0, t_e1_ = 0.0, e1_start_ = e1_;
     if (p_.track_displacement)
-      for (std::size_t a = 0; a < p_.size(); ++a) p_.rx[a] = p_.ry[a] = p_.rz[a] = p_.t_last[a] = 0.0;
-    std::fill(c_.pair_collisions.begin(), c_.pair_collisions.end(), 0);
+      std::fill(p_.flight.begin(), p_.flight.end(), Particles::Flight{{0, 0, 0}, 0.0});
+    c_.reset(p_.species());
   }
 
  private:
@@ -64,10 +77,15 @@ class EventLoop {
       }
       t_ = t_next;
       ++c_.trials;
-      const Proposal q = sel_.propose(rng_, p_);
+      // Software pipelining: the next proposal is drawn now and its two velocity records
+      // prefetched while this one is tested (their loads were the largest single cost in perf).
+      // A proposal depends only on the selector's state, so it stays valid until that changes; when
+      // an accepted collision raises a majorant it is discarded and drawn afresh (an unused draw).
+      const Proposal q = has_next_ ? next_ : sel_.propose(rng_, p_);
+      draw_next();
       if (q.a == q.b) continue;  // a particle with itself: zero true rate
-      const Vec3 g{p_.vx[q.a] - p_.vx[q.b], p_.vy[q.a] - p_.vy[q.b], p_.vz[q.a] - p_.vz[q.b]};
-      const double gn = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
+      const Vec3 g = p_.v[q.a] - p_.v[q.b];
+      const double gn = std::sqrt(norm2(g));
       if (!(rng_.uniform() * q.scale < gn)) continue;
       const Vec3 e = rng_.hemisphere({g.x / gn, g.y / gn, g.z / gn});
       const double g_dot_e = g.x * e.x + g.y * e.y + g.z * e.z;
@@ -79,12 +97,12 @@ class EventLoop {
       collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e);
       if (species1) e1_ += species1_energy(q);
       energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
-      ++c_.accepted;
-      ++c_.pair_collisions[q.i <= q.k ? q.i * p_.species() + q.k : q.k * p_.species() + q.i];
-      sel_.raise_speed(q.i, speed(q.a), p_);
-      sel_.raise_speed(q.k, speed(q.b), p_);
+      c_.count(q.i, q.k);
+      const bool raised_i = sel_.raise_speed(q.i, speed(q.a), p_), raised_k = sel_.raise_speed(q.k, speed(q.b), p_);
+      if (raised_i || raised_k) draw_next();
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
+        draw_next();
         energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
         e1_ = species_energy(p_, 0);
         since_refresh_ = 0;
@@ -93,13 +111,20 @@ class EventLoop {
     }
   }
 
+  void draw_next() {
+    next_ = sel_.propose(rng_, p_);
+    has_next_ = true;
+    __builtin_prefetch(&p_.v[next_.a]);
+    __builtin_prefetch(&p_.v[next_.b]);
+  }
+
   // Kinetic energy that the particles of species 1 in proposal q carry.
   double species1_energy(const Proposal& q) const {
-    auto e = [&](std::size_t a) { return 0.5 * p_.mass[0] * (p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); };
+    auto e = [&](std::size_t a) { return 0.5 * p_.mass[0] * norm2(p_.v[a]); };
     return (q.i == 0 ? e(q.a) : 0.0) + (q.k == 0 ? e(q.b) : 0.0);
   }
 
-  double speed(std::size_t a) const { return std::sqrt(p_.vx[a] * p_.vx[a] + p_.vy[a] * p_.vy[a] + p_.vz[a] * p_.vz[a]); }
+  double speed(std::size_t a) const { return std::sqrt(norm2(p_.v[a])); }
 
   Particles& p_;
   Selector& sel_;
@@ -111,6 +136,8 @@ class EventLoop {
   double energy_;
   double e1_, e1_start_;           // kinetic energy of species 1, now and at the clock's start
   double ts_ = 0.0, t_e1_ = 0.0;  // t_s accumulated up to t_e1_, the last change of e1_
+  Proposal next_{};               // the next trial's pair, drawn one trial ahead (has_next_)
+  bool has_next_ = false;
 };
 
 }  // namespace granmix::dsmc

@@ -20,7 +20,7 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
     p.mass.push_back(mix[k].mass);
   }
   const std::size_t N = p.offset.back();
-  p.vx.resize(N), p.vy.resize(N), p.vz.resize(N);
+  p.v.resize(N);
   // Species of two or more particles get zero mean velocity; a single particle keeps its own (zero
   // would leave T = 0). The single particles' momentum is then taken up by a common drift u of the
   // other particles, so that the total momentum is zero: otherwise the centre-of-mass energy P²/2M
@@ -32,18 +32,20 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
     const double sd = std::sqrt(T[k] / mix[k].mass);
     Vec3 c{0, 0, 0};
     for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
-      p.vx[j] = sd * rng.normal(), p.vy[j] = sd * rng.normal(), p.vz[j] = sd * rng.normal();
-      c.x += p.vx[j], c.y += p.vy[j], c.z += p.vz[j];
+      Vec3& v = p.v[j];
+      v.x = sd * rng.normal(), v.y = sd * rng.normal(), v.z = sd * rng.normal();
+      c.x += v.x, c.y += v.y, c.z += v.z;
     }
     const double n = static_cast<double>(counts[k]);
     if (counts[k] > 1) {
-      for (std::size_t j = p.begin(k); j < p.end(k); ++j) p.vx[j] -= c.x / n, p.vy[j] -= c.y / n, p.vz[j] -= c.z / n;
+      for (std::size_t j = p.begin(k); j < p.end(k); ++j) p.v[j].x -= c.x / n, p.v[j].y -= c.y / n, p.v[j].z -= c.z / n;
       M_many += n * mix[k].mass;
     } else {
       const std::size_t j = p.begin(k);
       const double f = rescale ? std::sqrt(T[k] / species_temperature(p, k)) : 1.0;
-      p.vx[j] *= f, p.vy[j] *= f, p.vz[j] *= f;
-      P.x += mix[k].mass * p.vx[j], P.y += mix[k].mass * p.vy[j], P.z += mix[k].mass * p.vz[j];
+      Vec3& v = p.v[j];
+      v.x *= f, v.y *= f, v.z *= f;
+      P.x += mix[k].mass * v.x, P.y += mix[k].mass * v.y, P.z += mix[k].mass * v.z;
     }
   }
   const Vec3 u = M_many > 0.0 ? Vec3{-P.x / M_many, -P.y / M_many, -P.z / M_many} : Vec3{0, 0, 0};
@@ -54,10 +56,10 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
     const double w2 = 3.0 * species_temperature(p, k) / p.mass[k], target = 3.0 * T[k] / p.mass[k] - u2;
     const double f = rescale && w2 > 0.0 && target > 0.0 ? std::sqrt(target / w2) : 1.0;
     for (std::size_t j = p.begin(k); j < p.end(k); ++j)
-      p.vx[j] = u.x + f * p.vx[j], p.vy[j] = u.y + f * p.vy[j], p.vz[j] = u.z + f * p.vz[j];
+      p.v[j] = {u.x + f * p.v[j].x, u.y + f * p.v[j].y, u.z + f * p.v[j].z};
   }
   p.track_displacement = track_displacement;
-  if (track_displacement) p.rx.assign(N, 0.0), p.ry.assign(N, 0.0), p.rz.assign(N, 0.0), p.t_last.assign(N, 0.0);
+  if (track_displacement) p.flight.assign(N, Particles::Flight{{0, 0, 0}, 0.0});
   return p;
 }
 
@@ -67,7 +69,7 @@ double species_temperature(const Particles& p, std::size_t k) {
 
 double speed_max(const Particles& p, std::size_t k) {
   double s = 0.0;
-  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s = std::max(s, p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j]);
+  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s = std::max(s, norm2(p.v[j]));
   return std::sqrt(s);
 }
 
@@ -77,7 +79,7 @@ namespace granmix::dsmc {
 
 double species_energy(const Particles& p, std::size_t k) {
   double s = 0.0;
-  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += p.vx[j] * p.vx[j] + p.vy[j] * p.vy[j] + p.vz[j] * p.vz[j];
+  for (std::size_t j = p.begin(k); j < p.end(k); ++j) s += norm2(p.v[j]);
   return 0.5 * p.mass[k] * s;
 }
 

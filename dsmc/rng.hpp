@@ -15,6 +15,9 @@ struct Vec3 {
   double x, y, z;
 };
 
+inline double norm2(const Vec3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
 class Rng {
  public:
   Rng(std::uint64_t seed, std::uint64_t replica) : gen_(seed, replica) {}

@@ -72,15 +72,13 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
         row.push_back(setup.times[j]);  // lags are the time grid (as in theory.tsv)
         push(k > 0 ? std::pair{r.tamsd.mean[j * M + k - 1], r.tamsd.err[j * M + k - 1]} : std::pair{nan, nan});
       }
-      // Collisions per particle: species k takes part in C_ik for i != k once and in C_kk twice.
+      // Collisions per particle: species k takes part in C_ik for i != k once and in C_kk twice; the
+      // whole system's count sums the species (each collision twice), errors as if independent.
       double c = 0.0, ce2 = 0.0, particles = 0.0;
-      for (std::size_t a = 0; a < M; ++a)
-        for (std::size_t b = a; b < M; ++b) {
-          const std::size_t idx = j * M * M + a * M + b;
-          const double times = k == 0 ? 2.0 : (a == k - 1 ? 1.0 : 0.0) + (b == k - 1 ? 1.0 : 0.0);
-          c += times * r.pair_collisions.mean[idx];
-          ce2 += times * times * r.pair_collisions.err[idx] * r.pair_collisions.err[idx];
-        }
+      for (std::size_t a = (k == 0 ? 0 : k - 1); a < (k == 0 ? M : k); ++a) {
+        c += r.species_collisions.mean[j * M + a];
+        ce2 += r.species_collisions.err[j * M + a] * r.species_collisions.err[j * M + a];
+      }
       particles = k == 0 ? double(r.particles) : double(setup.counts[k - 1]);
       push({c / particles, std::sqrt(ce2) / particles});
       t.rows.push_back(std::move(row));

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <vector>
 
+#include "alias_table.hpp"
 #include "pair_table.hpp"
 #include "particles.hpp"
 #include "rng.hpp"
@@ -35,10 +36,12 @@ class DirectSelector {
     const std::size_t M = pairs_.M, cell = tree_.sample(rng.uniform()), i = cell / M, k = cell % M;
     return {p.begin(i) + rng.below(p.count(i)), p.begin(k) + rng.below(p.count(k)), i, k, vmax_[i] + vmax_[k]};
   }
-  void raise_speed(std::size_t i, double speed, const Particles& p) {
-    if (speed <= vmax_[i]) return;
+  // Raise species i's majorant speed; true when the selector's state changed.
+  bool raise_speed(std::size_t i, double speed, const Particles& p) {
+    if (speed <= vmax_[i]) return false;
     vmax_[i] = speed;
     update_row(i, p);
+    return true;
   }
   void refresh(const Particles& p) {
     for (std::size_t i = 0; i < pairs_.M; ++i) vmax_[i] = speed_max(p, i), update_row(i, p);
@@ -54,8 +57,7 @@ class DirectSelector {
     return w;
   }
   double weight(std::size_t i, std::size_t k, const Particles& p) const {
-    const std::size_t M = pairs_.M;
-    return double(p.count(i)) * vmax_[i] * double(p.count(k)) * pairs_.sigma2[i * M + k] * pairs_.chi[i * M + k];
+    return double(p.count(i)) * vmax_[i] * double(p.count(k)) * pairs_.sigma2(i, k) * pairs_.chi(i, k);
   }
   void update_row(std::size_t i, const Particles& p) {
     for (std::size_t k = 0; k < pairs_.M; ++k) tree_.set(i * pairs_.M + k, weight(i, k, p));
@@ -66,58 +68,59 @@ class DirectSelector {
 };
 
 // The low-rank method of the source paper (v1 Eqs. 12–14): σ_ik² = (σ_i² + 2σ_iσ_k + σ_k²)/4 makes
-// N_i vmax_i N_k σ_ik² a sum of three rank-1 terms u_i^(r) v_k^(r); i is drawn from a sum tree over
-// u^(r) (which changes with vmax_i), k from a sum tree over the fixed v^(r). O(log M) per proposal
-// and per speed update. Enskog χ_ik is not low-rank: the majorant uses χ_max and the acceptance
-// carries χ_ik/χ_max (exact, at the price of more rejections).
+// the majorant N_i vmax_i N_k σ_ik² a sum of three rank-1 terms. Summed over k it is
+// W_i = N_i vmax_i (σ_i² S_0 + 2σ_i S_1 + S_2) with S_r = Σ_k N_k σ_k^r, so i is drawn from one sum
+// tree over W_i (O(log M) per proposal and per speed update), then the term r with probability
+// ∝ (σ_i² S_0, 2σ_i S_1, S_2), then k from the fixed weights N_k σ_k^r by an alias table (O(1)).
+// (Drawing r first and i, k from three trees gives the same pair law with three tree descents.)
+// Enskog χ_ik is not low-rank: the majorant uses χ_max and the acceptance carries χ_ik/χ_max
+// (exact, at the price of more rejections).
 class LowRankSelector {
  public:
-  LowRankSelector(const PairTable& pairs, const Particles& p) : pairs_(pairs), vmax_(p.species()) {
-    const std::size_t M = pairs_.M;
-    for (std::size_t i = 0; i < M; ++i) vmax_[i] = speed_max(p, i);
-    std::array<std::vector<double>, 3> u, v;
-    for (int r = 0; r < 3; ++r) u[r].resize(M), v[r].resize(M);
-    for (std::size_t i = 0; i < M; ++i) {
-      const double n = double(p.count(i)), s = pairs_.sigma[i];
-      v[0][i] = n, v[1][i] = n * s, v[2][i] = n * s * s;
-      for (int r = 0; r < 3; ++r) u[r][i] = u_weight(r, i, p);
-    }
-    for (int r = 0; r < 3; ++r) u_.emplace_back(u[r]), v_.emplace_back(v[r]);
-  }
-  double total_rate() const { return std::numbers::pi * pairs_.chi_max / (4.0 * pairs_.volume) * sum(); }
+  LowRankSelector(const PairTable& pairs, const Particles& p)
+      : pairs_(pairs), vmax_(p.species()), k_{AliasTable(v_weights(0, p)), AliasTable(v_weights(1, p)), AliasTable(v_weights(2, p))},
+        tree_(i_weights(p)) {}
+  double total_rate() const { return std::numbers::pi * pairs_.chi_max / (4.0 * pairs_.volume) * tree_.total(); }
   Proposal propose(Rng& rng, const Particles& p) const {
-    // Term r with probability U_r V_r / Σ; then i ∝ u_i^(r), k ∝ v_k^(r).
-    const double x = rng.uniform() * sum();
-    const double t0 = u_[0].total() * v_[0].total(), t1 = u_[1].total() * v_[1].total();
-    const int r = x < t0 ? 0 : (x < t0 + t1 ? 1 : 2);
-    const std::size_t i = u_[r].sample(rng.uniform()), k = v_[r].sample(rng.uniform());
-    const double chi_ratio = pairs_.chi_max / pairs_.chi[i * pairs_.M + k];
+    const std::size_t i = tree_.sample(rng.uniform());
+    const double s = pairs_.sigma[i], t0 = s * s * S_[0], t1 = 2.0 * s * S_[1];
+    const double x = rng.uniform() * (t0 + t1 + S_[2]);
+    const std::size_t k = k_[x < t0 ? 0 : (x < t0 + t1 ? 1 : 2)].sample(rng.uniform());
+    const double chi_ratio = pairs_.dilute() ? 1.0 : pairs_.chi_max / pairs_.chi(i, k);
     return {p.begin(i) + rng.below(p.count(i)), p.begin(k) + rng.below(p.count(k)), i, k, chi_ratio * (vmax_[i] + vmax_[k])};
   }
-  void raise_speed(std::size_t i, double speed, const Particles& p) {
-    if (speed <= vmax_[i]) return;
+  bool raise_speed(std::size_t i, double speed, const Particles& p) {
+    if (speed <= vmax_[i]) return false;
     vmax_[i] = speed;
-    for (int r = 0; r < 3; ++r) u_[r].set(i, u_weight(r, i, p));
+    tree_.set(i, weight(i, p));
+    return true;
   }
   void refresh(const Particles& p) {
-    for (std::size_t i = 0; i < pairs_.M; ++i) {
-      vmax_[i] = speed_max(p, i);
-      for (int r = 0; r < 3; ++r) u_[r].set(i, u_weight(r, i, p));
-    }
+    for (std::size_t i = 0; i < pairs_.M; ++i) vmax_[i] = speed_max(p, i), tree_.set(i, weight(i, p));
   }
 
  private:
-  // u^(1) = N vmax σ², u^(2) = 2 N vmax σ, u^(3) = N vmax; paired with v = N, N σ, N σ².
-  double u_weight(int r, std::size_t i, const Particles& p) const {
-    const double s = pairs_.sigma[i], base = double(p.count(i)) * vmax_[i];
-    return r == 0 ? base * s * s : (r == 1 ? 2.0 * base * s : base);
+  // N_k σ_k^r, and their sums S_r.
+  std::vector<double> v_weights(int r, const Particles& p) {
+    std::vector<double> w(pairs_.M);
+    S_[r] = 0.0;
+    for (std::size_t k = 0; k < pairs_.M; ++k) S_[r] += w[k] = double(p.count(k)) * std::pow(pairs_.sigma[k], r);
+    return w;
   }
-  double sum() const {
-    return u_[0].total() * v_[0].total() + u_[1].total() * v_[1].total() + u_[2].total() * v_[2].total();
+  std::vector<double> i_weights(const Particles& p) {
+    std::vector<double> w(pairs_.M);
+    for (std::size_t i = 0; i < pairs_.M; ++i) vmax_[i] = speed_max(p, i), w[i] = weight(i, p);
+    return w;
+  }
+  double weight(std::size_t i, const Particles& p) const {
+    const double s = pairs_.sigma[i];
+    return double(p.count(i)) * vmax_[i] * (s * s * S_[0] + 2.0 * s * S_[1] + S_[2]);
   }
   const PairTable& pairs_;
   std::vector<double> vmax_;
-  std::vector<SumTree> u_, v_;
+  double S_[3] = {0, 0, 0};
+  AliasTable k_[3];
+  SumTree tree_;
 };
 
 // Bird's method, the comparison of the v2 paper: one global bound σ_max² χ_max 2 vmax for every
@@ -131,11 +134,15 @@ class BirdSelector {
   }
   Proposal propose(Rng& rng, const Particles& p) const {
     const std::size_t a = rng.below(n_), b = rng.below(n_);
-    const std::size_t i = species_of(a, p), k = species_of(b, p), ik = i * pairs_.M + k;
-    const double scale = pairs_.sigma2_max * pairs_.chi_max / (pairs_.sigma2[ik] * pairs_.chi[ik]) * 2.0 * vmax_;
+    const std::size_t i = species_of(a, p), k = species_of(b, p);
+    const double scale = pairs_.sigma2_max * pairs_.chi_max / (pairs_.sigma2(i, k) * pairs_.chi(i, k)) * 2.0 * vmax_;
     return {a, b, i, k, scale};
   }
-  void raise_speed(std::size_t, double speed, const Particles&) { vmax_ = std::max(vmax_, speed); }
+  bool raise_speed(std::size_t, double speed, const Particles&) {
+    if (speed <= vmax_) return false;
+    vmax_ = speed;
+    return true;
+  }
   void refresh(const Particles& p) {
     n_ = p.size();
     vmax_ = 0.0;

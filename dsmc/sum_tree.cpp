@@ -16,22 +16,4 @@ void SumTree::set(std::size_t i, double w) {
   for (n /= 2; n >= 1; n /= 2) node_[n] = node_[2 * n] + node_[2 * n + 1];
 }
 
-std::size_t SumTree::sample(double u) const {
-  double x = u * node_[1];
-  std::size_t n = 1;
-  while (n < leaves_) {
-    const double left = node_[2 * n];
-    if (x < left) {
-      n = 2 * n;
-    } else {
-      x -= left;
-      n = 2 * n + 1;
-    }
-  }
-  std::size_t i = n - leaves_;
-  // Rounding can push x past the last non-empty leaf: step back to a leaf with weight.
-  while (i >= size_ || node_[leaves_ + i] == 0.0) --i;
-  return i;
-}
-
 }  // namespace granmix::dsmc

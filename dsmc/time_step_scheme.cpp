@@ -8,13 +8,13 @@ namespace granmix::dsmc {
 TimeStepScheme::TimeStepScheme(Particles& p, const PairTable& pairs, const model::Restitution& law, Rng& rng, Counters& c,
                                double factor)
     : p_(p), pairs_(pairs), law_(law), rng_(rng), c_(c), factor_(factor), carry_(pairs.M * pairs.M, 0.0) {
-  c_.pair_collisions.assign(pairs.M * pairs.M, 0);
+  c_.reset(pairs.M);
 }
 
 void TimeStepScheme::run_until(double t_stop) {
   const double n1 = double(p_.count(0)) / pairs_.volume;
-  // MG: λ11 = (√2 π n1 χ11 σ11²)⁻¹ with σ11 = diameter of species 1 (pairs_.sigma2[0] = σ11²).
-  const double lambda11 = 1.0 / (std::sqrt(2.0) * std::numbers::pi * n1 * pairs_.chi[0] * pairs_.sigma2[0]);
+  // MG: λ11 = (√2 π n1 χ11 σ11²)⁻¹ with σ11 = diameter of species 1.
+  const double lambda11 = 1.0 / (std::sqrt(2.0) * std::numbers::pi * n1 * pairs_.chi(0, 0) * pairs_.sigma2(0, 0));
   while (t_ < t_stop) {
     const double v01 = std::sqrt(2.0 * species_temperature(p_, 0) / p_.mass[0]);
     const double dt = std::min(factor_ * lambda11 / v01, t_stop - t_);
@@ -34,7 +34,7 @@ void TimeStepScheme::step(double dt) {
       const std::size_t ij = i * M + j;
       const double nj = double(p_.count(j)) / pairs_.volume;
       // ω_max = 4π σ_ij² n_j χ_ij (vmax_i + vmax_j): |g·σ̂| <= |g| <= vmax_i + vmax_j.
-      const double omega_max = 4.0 * std::numbers::pi * pairs_.sigma2[ij] * nj * pairs_.chi[ij] * (vmax[i] + vmax[j]);
+      const double omega_max = 4.0 * std::numbers::pi * pairs_.sigma2(i, j) * nj * pairs_.chi(i, j) * (vmax[i] + vmax[j]);
       carry_[ij] += 0.5 * double(p_.count(i)) * omega_max * dt;
       const auto candidates = static_cast<std::uint64_t>(carry_[ij]);
       carry_[ij] -= double(candidates);
@@ -43,13 +43,13 @@ void TimeStepScheme::step(double dt) {
         const std::size_t a = p_.begin(i) + rng_.below(p_.count(i)), b = p_.begin(j) + rng_.below(p_.count(j));
         if (a == b) continue;
         const Vec3 u = rng_.unit_vector();  // σ̂ uniform (MG step 1)
-        const double ge = (p_.vx[a] - p_.vx[b]) * u.x + (p_.vy[a] - p_.vy[b]) * u.y + (p_.vz[a] - p_.vz[b]) * u.z;
+        const Vec3 g = p_.v[a] - p_.v[b];
+        const double ge = g.x * u.x + g.y * u.y + g.z * u.z;
         if (!(ge > 0.0) || !(rng_.uniform() * (vmax[i] + vmax[j]) < ge)) continue;  // Θ(g·σ̂) ω/ω_max
         const double eps = law_.eps_at(i, j, ge);
         if (p_.track_displacement) advance_displacement(p_, a, t_mid), advance_displacement(p_, b, t_mid);
         collide(p_, a, b, p_.mass[i], p_.mass[j], eps, u, ge);
-        ++c_.accepted;
-        ++c_.pair_collisions[i <= j ? i * M + j : j * M + i];
+        c_.count(i, j);
       }
     }
 }

@@ -7,7 +7,13 @@
 namespace granmix::model {
 
 Restitution Restitution::constant(std::size_t species, double eps) {
-  return constant_matrix(std::vector<std::vector<double>>(species, std::vector<double>(species, eps)));
+  if (!(eps >= 0.0 && eps <= 1.0)) throw std::invalid_argument("restitution must lie in [0, 1]");
+  // One value for every pair, no M×M matrix: 1e5 species would need 80 GB for it.
+  Restitution r;
+  r.kind_ = Kind::constant;
+  r.size_ = species;
+  r.uniform_ = eps;
+  return r;
 }
 
 Restitution Restitution::constant_matrix(std::vector<std::vector<double>> eps) {
@@ -47,7 +53,7 @@ Restitution Restitution::viscoelastic(const Mixture& mix, double akappa11, Visco
 }
 
 double Restitution::eps_at(std::size_t k, std::size_t i, double normal_speed) const {
-  if (kind_ == Kind::constant) return eps_[k][i];
+  if (kind_ == Kind::constant) return eps(k, i);
   // v1 Eq. (5): y = (Aκ^(2/5))^(1/2) |g·e|^(1/10).
   const double y = std::sqrt(akappa_[k][i]) * std::pow(std::abs(normal_speed), 0.1);
   return restitution(form_, y);

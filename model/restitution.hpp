@@ -24,7 +24,7 @@ class Restitution {
   ViscoelasticForm form() const { return form_; }
 
   // Constant law: ε_ki.
-  double eps(std::size_t k, std::size_t i) const { return eps_[k][i]; }
+  double eps(std::size_t k, std::size_t i) const { return uniform_ >= 0.0 ? uniform_ : eps_[k][i]; }
   // Viscoelastic law: Aκ_ki^(2/5), so that y = (Aκ_ki^(2/5))^(1/2) |g·e|^(1/10).
   double akappa(std::size_t k, std::size_t i) const { return akappa_[k][i]; }
   // ε for a pair at normal impact speed |g·e| (either law).
@@ -33,7 +33,8 @@ class Restitution {
  private:
   Kind kind_ = Kind::constant;
   std::size_t size_ = 0;
-  std::vector<std::vector<double>> eps_;
+  double uniform_ = -1.0;                 // constant(): the ε of every pair (then eps_ is empty)
+  std::vector<std::vector<double>> eps_;  // constant_matrix(): ε_ki
   std::vector<std::vector<double>> akappa_;
   ViscoelasticForm form_ = ViscoelasticForm::exact;
 };

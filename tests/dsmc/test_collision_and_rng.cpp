@@ -17,7 +17,7 @@ Particles two_particles(double ma, double mb) {
   Particles p;
   p.offset = {0, 1, 2};
   p.mass = {ma, mb};
-  p.vx = {1.3, -0.4}, p.vy = {-0.2, 0.9}, p.vz = {0.7, 0.1};
+  p.v = {{1.3, -0.2, 0.7}, {-0.4, 0.9, 0.1}};
   return p;
 }
 }  // namespace
@@ -27,18 +27,17 @@ TEST_CASE("one collision: momentum to 1e-13 and the energy loss (1-eps^2) m_eff 
   for (double eps : {0.0, 0.3, 0.9, 1.0})
     for (double mb : {1.0, 100.0, 1e4}) {
       Particles p = two_particles(1.0, mb);
-      const Vec3 g{p.vx[0] - p.vx[1], p.vy[0] - p.vy[1], p.vz[0] - p.vz[1]};
+      const Vec3 g = p.v[0] - p.v[1];
       const double gn = std::sqrt(g.x * g.x + g.y * g.y + g.z * g.z);
       const Vec3 e = rng.hemisphere({g.x / gn, g.y / gn, g.z / gn});
       const double ge = g.x * e.x + g.y * e.y + g.z * e.z;
       REQUIRE(ge > 0.0);
       auto momentum = [&](int c) {
-        const auto& v = c == 0 ? p.vx : c == 1 ? p.vy : p.vz;
-        return v[0] + mb * v[1];
+        auto comp = [&](const Vec3& v) { return c == 0 ? v.x : c == 1 ? v.y : v.z; };
+        return comp(p.v[0]) + mb * comp(p.v[1]);
       };
       auto energy = [&] {
-        return 0.5 * (p.vx[0] * p.vx[0] + p.vy[0] * p.vy[0] + p.vz[0] * p.vz[0]) +
-               0.5 * mb * (p.vx[1] * p.vx[1] + p.vy[1] * p.vy[1] + p.vz[1] * p.vz[1]);
+        return 0.5 * norm2(p.v[0]) + 0.5 * mb * norm2(p.v[1]);
       };
       const double P[3] = {momentum(0), momentum(1), momentum(2)}, E = energy();
       collide(p, 0, 1, 1.0, mb, eps, e, ge);
@@ -47,7 +46,8 @@ TEST_CASE("one collision: momentum to 1e-13 and the energy loss (1-eps^2) m_eff 
       const double meff = mb / (1 + mb);
       CHECK(E - energy() == Approx((1 - eps * eps) * meff * ge * ge / 2).epsilon(1e-12).margin(1e-14 * E));
       // After the collision the normal relative speed is reversed and scaled by ε (v1 Eq. 4).
-      const double ge_after = (p.vx[0] - p.vx[1]) * e.x + (p.vy[0] - p.vy[1]) * e.y + (p.vz[0] - p.vz[1]) * e.z;
+      const Vec3 g_after = p.v[0] - p.v[1];
+      const double ge_after = g_after.x * e.x + g_after.y * e.y + g_after.z * e.z;
       CHECK(ge_after == Approx(-eps * ge).margin(1e-13));
     }
 }
@@ -129,8 +129,8 @@ TEST_CASE("initial state with single-particle species: zero total momentum and e
   for (std::size_t k = 0; k < 4; ++k) {
     CHECK(species_temperature(p, k) == Approx(T[k]).epsilon(1e-13));  // rounding of one rescale
     for (std::size_t j = p.begin(k); j < p.end(k); ++j) {
-      px += p.mass[k] * p.vx[j], py += p.mass[k] * p.vy[j], pz += p.mass[k] * p.vz[j];
-      scale += p.mass[k] * std::abs(p.vx[j]);
+      px += p.mass[k] * p.v[j].x, py += p.mass[k] * p.v[j].y, pz += p.mass[k] * p.v[j].z;
+      scale += p.mass[k] * std::abs(p.v[j].x);
     }
   }
   const double worst = std::max({std::abs(px), std::abs(py), std::abs(pz)}) / scale;

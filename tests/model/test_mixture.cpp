@@ -57,7 +57,7 @@ TEST_CASE("Montanero-Garzo binary parameters", "[model]") {
   CHECK(mix.total_density() * std::pow(mix.sigma(0, 1), 3) == Approx(0.1).epsilon(1e-14));
 }
 
-TEST_CASE("exponential mixture of v2 Fig. 6: 691 species, counts floor(999 e^-0.01(k-1)), n = 0.1", "[model]") {
+TEST_CASE("exponential mixture of v2 Fig. 6: 691 species - counts floor(999 e^-0.01(k-1)) - n = 0.1", "[model]") {
   const Mixture mix = exponential_mixture(Exponential{});
   REQUIRE(mix.size() == 691);
   double N = 0.0;  // the paper's count, summed here independently of the generator
@@ -74,7 +74,7 @@ TEST_CASE("exponential mixture of v2 Fig. 6: 691 species, counts floor(999 e^-0.
   CHECK(exponential_mixture(Exponential{5, 1.0, 10, 0.1}).size() == 2);
 }
 
-TEST_CASE("sweep point along n*: n sigma12^3 = n*, Enskog on, ratios kept; n* = 0 is the dilute gas", "[model]") {
+TEST_CASE("sweep point along n*: n sigma12^3 = n* - Enskog on - ratios kept - n* = 0 is the dilute gas", "[model]") {
   Scene s;
   s.mixture = montanero_garzo_binary(2, 0.5, 2, 0);
   s.restitution = Restitution::constant(2, 0.6);
