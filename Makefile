@@ -23,9 +23,7 @@ figures: build
 	@$(BUILD)/granmix validate --fidelity paper --out $(OUT)/paper
 
 bench: build
-	@$(BUILD)/bench/granmix_bench_theory
-	@$(BUILD)/bench/granmix_bench_dsmc
-	@$(BUILD)/bench/granmix_mg_table
+	@$(BUILD)/granmix bench --out $(OUT)
 
 clean:
 	rm -rf $(BUILD) $(OUT)

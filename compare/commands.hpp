@@ -18,5 +18,6 @@ std::function<int()> add_hcs_command(CLI::App& app);
 std::function<int()> add_dsmc_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
 std::function<int()> add_validate_command(CLI::App& app);
+std::function<int()> add_bench_command(CLI::App& app);
 
 }  // namespace granmix::compare

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   actions["dsmc"] = compare::add_dsmc_command(app);
   actions["compare"] = compare::add_compare_command(app);
   actions["validate"] = compare::add_validate_command(app);
+  actions["bench"] = compare::add_bench_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

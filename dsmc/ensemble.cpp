@@ -190,14 +190,18 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
 ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, std::size_t r) {
   if (s.aged || s.tamsd_measurement_time > 0.0)
     throw std::invalid_argument("DSMC: the timestep method has no aged start and no TAMSD");
+  auto clock = std::chrono::steady_clock::now();
   Rng rng(s.seed, r);
   Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd, s.rescale, rng);
   Counters c;
   TimeStepScheme scheme(p, pairs, s.law, rng, c, s.time_step_factor);
   ReplicaRecord out;
+  out.seconds_setup += lap(clock);
   for (double t : s.times) {
     scheme.run_until(t);
+    out.seconds_loop += lap(clock);
     sample(p, t, s, c, out);
+    out.seconds_sample += lap(clock);
     out.rescaled_time.push_back(std::numeric_limits<double>::quiet_NaN());  // not tracked by the scheme
   }
   out.trials = c.trials, out.accepted = c.accepted, out.steps = scheme.steps();

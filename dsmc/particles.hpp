@@ -25,7 +25,8 @@ struct Particles {
 
   std::size_t species() const { return mass.size(); }
   std::size_t size() const { return v.size(); }
-  std::size_t bytes_per_particle() const { return sizeof(Vec3) + (track_displacement ? sizeof(Flight) : 0); }
+  // Memory of one particle's records (the per-species tables are O(M), not O(N)).
+  static std::size_t bytes_per_particle(bool with_displacement) { return sizeof(Vec3) + (with_displacement ? sizeof(Flight) : 0); }
   std::size_t count(std::size_t k) const { return offset[k + 1] - offset[k]; }
   std::size_t begin(std::size_t k) const { return offset[k]; }
   std::size_t end(std::size_t k) const { return offset[k + 1]; }

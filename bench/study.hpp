@@ -1,0 +1,46 @@
+#pragma once
+// Speed-against-error studies of `granmix bench STUDY` (design.md §3, issue 6). A study computes a
+// table (numbers only, long form with a `series` column) and says how to plot it; compare/
+// command_bench.cpp writes the TSV with provenance, the gnuplot figure and the JSON lines.
+// Speed is measured here, never asserted in tests.
+#include <cstddef>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "model/table.hpp"
+
+namespace granmix::bench {
+
+struct StudyFigure {
+  std::string x, y, xlabel, ylabel;
+  bool logx = false, logy = false;
+  std::vector<std::string> series;  // label of series 0, 1, …
+  std::vector<std::string> extra;   // further gnuplot plot terms (guide lines)
+};
+
+struct StudyResult {
+  std::string name;
+  model::Table table;   // first columns: series, then the study's own
+  StudyFigure figure;
+  std::vector<std::string> json;     // one JSON object per line (--json)
+  std::vector<std::string> summary;  // lines for the terminal: targets and what was measured
+};
+
+struct StudyOptions {
+  int repeats = 3;     // medians of this many runs (the machine is noisy)
+  bool quick = false;  // smaller systems: a smoke run for tests and CI
+  std::uint64_t seed = 1;
+  std::function<void(const std::string&)> progress;  // one line per finished case
+};
+
+StudyResult selectors_study(const StudyOptions& o);
+StudyResult theory_study(const StudyOptions& o);
+StudyResult dsmc_error_study(const StudyOptions& o);
+StudyResult methods_study(const StudyOptions& o);
+
+// Study names in the order `granmix bench` runs them.
+const std::vector<std::string>& study_names();
+StudyResult run_study(const std::string& name, const StudyOptions& o);
+
+}  // namespace granmix::bench
