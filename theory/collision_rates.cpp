@@ -1,5 +1,7 @@
 #include "collision_rates.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -10,6 +12,12 @@ CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::
                                MomentMethod method)
     : mix_(std::move(mix)), law_(std::move(law)), chi_(std::move(chi)), method_(method) {
   const std::size_t N = mix_.size();
+  // The rates are sums over all N² pairs (v1 Eqs. 20, 23) with a table of pair constants: refuse
+  // what would not fit rather than fail in the allocator or run for hours.
+  if (double(N) * double(N) * sizeof(Pair) > max_pair_table_bytes)
+    throw std::invalid_argument(fmt::format("theory: {} species need a pair table of {:.1f} GB (N² × {} bytes); the limit is {:.0f} GB, "
+                                            "about {} species", N, double(N) * double(N) * sizeof(Pair) / 1e9, sizeof(Pair),
+                                            max_pair_table_bytes / 1e9, std::size_t(std::sqrt(max_pair_table_bytes / sizeof(Pair)))));
   if (law_.size() != N || chi_.size() != N)
     throw std::invalid_argument("collision rates: restitution and χ must have one row per species");
   if (method_ == MomentMethod::automatic)

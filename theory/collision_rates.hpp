@@ -23,6 +23,9 @@ enum class MomentMethod { automatic, series, quadrature };
 
 class CollisionRates {
  public:
+  // Largest pair table the constructor accepts (1 GB: about 3700 species); above, std::invalid_argument.
+  static constexpr double max_pair_table_bytes = 1e9;
+
   CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
                  MomentMethod method = MomentMethod::automatic);
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "dsmc/ensemble.hpp"
+#include "dsmc_fixtures.hpp"
 #include "dsmc/selectors.hpp"
 #include "model/enskog.hpp"
 #include "theory/diffusion.hpp"
@@ -22,16 +23,7 @@ namespace {
 
 DsmcSetup setup(std::vector<model::Species> s, double eps, std::vector<std::size_t> counts, std::vector<double> times,
                 std::size_t replicas, Method m = Method::automatic) {
-  DsmcSetup d;
-  d.mixture = model::Mixture(std::move(s));
-  d.law = model::Restitution::constant(d.mixture.size(), eps);
-  d.counts = std::move(counts);
-  d.T0.assign(d.mixture.size(), 1.0);
-  d.times = std::move(times);
-  d.replicas = replicas;
-  d.method = m;
-  d.seed = 2024;
-  return d;
+  return test::dsmc_setup(std::move(s), eps, std::move(counts), std::move(times), replicas, m);
 }
 
 // Collisions per particle of species k with species i up to sample j.
