@@ -4,6 +4,7 @@
 // the figure; --json prints one JSON object per measured case on stdout instead of the tables.
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -33,8 +34,8 @@ std::string gnuplot_script(const bench::StudyResult& r) {
   if (f.logy) gp += "set logscale y\n";
   std::string plot = "plot ";
   for (std::size_t i = 0; i < f.series.size(); ++i)
-    plot += fmt::format("{}'{}.tsv' using (column('series') == {} ? column('{}') : NaN):(column('{}')) with linespoints ls {} title '{}'",
-                        i ? ", \\\n     " : "", r.name, i, f.x, f.y, 1 + i % 8, f.series[i]);
+    plot += fmt::format("{}'{}.tsv' using (column('series') == {} ? column('{}') : NaN):(column('{}')) with linespoints ls {} pt {} title '{}'",
+                        i ? ", \\\n     " : "", r.name, i, f.x, f.y, 1 + i % 8, 1 + i % 13, f.series[i]);
   for (const std::string& e : f.extra) plot += ", \\\n     " + e;
   gp += "set terminal pngcairo size 1100,650 enhanced font 'DejaVu Sans,11'\nset output '" + r.name + ".png'\n" + plot + "\n";
   gp += "set terminal pdfcairo size 7.5in,4.5in enhanced font 'DejaVu Sans,9'\nset output '" + r.name + ".pdf'\nreplot\nunset output\n";
@@ -53,7 +54,9 @@ int run(const BenchOptions& o) {
   if (!o.json) so.progress = [](const std::string& line) { std::printf("  %s\n", line.c_str()), std::fflush(stdout); };
   for (const std::string& name : studies) {
     if (!o.json) std::printf("bench %s%s:\n", name.c_str(), o.quick ? " (quick)" : ""), std::fflush(stdout);
-    const bench::StudyResult r = bench::run_study(name, so);
+    bench::StudyResult r = bench::run_study(name, so);
+    // Rows of one series together: gnuplot then draws each series as one connected line.
+    std::stable_sort(r.table.rows.begin(), r.table.rows.end(), [](const auto& a, const auto& b) { return a[0] < b[0]; });
     const std::filesystem::path dir = std::filesystem::path(o.out) / "bench" / name;
     std::filesystem::create_directories(dir);
     Provenance p;

@@ -76,6 +76,7 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
   for (std::size_t o = 0; p.x != "species" && o < cycle.size(); ++o) {
     const int k = cycle[o];
     if ((p.y == "D_ratio" && k == 1) || !has_values(k)) continue;  // D_1/D_1 = 1; γ lives on species 0 only
+    if (!p.species.empty() && std::find(p.species.begin(), p.species.end(), std::size_t(k)) == p.species.end()) continue;
     const std::string label = k == 0 ? (p.y == "gamma" ? "T1/T2" : p.y == "gamma_ratio" ? "gamma(n*)/gamma(0)" : "total") : fmt::format("species {}", k);
     const int ls = k == 0 ? 9 : 1 + (k - 1) % 4;
     plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} title '{} theory'", cycle.size(),

@@ -144,7 +144,7 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   Rng rng(s.seed, r);
   const bool tamsd = s.tamsd_measurement_time > 0.0;
   Particles p = maxwellian_particles(s.mixture, s.counts, s.T0, s.msd || tamsd, s.rescale, rng);
-  Selector sel(pairs, p);
+  Selector sel(pairs, p, tamsd ? 1 : s.speed_classes);
   Counters c;
   EventLoop<Selector> loop(p, sel, s.law, rng, c, p.size());
   if (s.aged) {

@@ -43,6 +43,10 @@ struct DsmcSetup {
   // Settled (HCS) runs: Φ_k(v*) is stationary, so each replica's histogram is averaged over the
   // sample times before the replica statistics are taken (one block [(k * bins) + b]).
   bool distribution_time_average = false;
+  // Speed classes per species for the direct and low-rank majorants (dsmc/speed_classes.hpp); 1 is
+  // the paper's per-species vmax. TAMSD runs use 1: classes reorder particles, tracers need identity.
+  // 3 was the fastest of 1–8 on the 691-species system (speed_classes.cpp).
+  std::size_t speed_classes = 3;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores

@@ -98,8 +98,11 @@ class EventLoop {
       if (species1) e1_ += species1_energy(q);
       energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
       c_.count(q.i, q.k);
-      const bool raised_i = sel_.raise_speed(q.i, speed(q.a), p_), raised_k = sel_.raise_speed(q.k, speed(q.b), p_);
-      if (raised_i || raised_k) draw_next();
+      std::size_t b = q.b;  // kept on its particle while a moves between speed classes
+      const bool moved_a = sel_.moved(q.a, q.i, b, p_);
+      std::size_t unused = p_.size();
+      const bool moved_b = sel_.moved(b, q.k, unused, p_);
+      if (moved_a || moved_b) draw_next();
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
         draw_next();
@@ -124,7 +127,6 @@ class EventLoop {
     return (q.i == 0 ? e(q.a) : 0.0) + (q.k == 0 ? e(q.b) : 0.0);
   }
 
-  double speed(std::size_t a) const { return std::sqrt(norm2(p_.v[a])); }
 
   Particles& p_;
   Selector& sel_;

@@ -51,16 +51,21 @@ class Rng {
   }
 
   // Unit vector e around the unit vector n with density ∝ (n·e) on the hemisphere n·e > 0:
-  // cos θ = √u, the distribution of collision directions weighted by the normal speed.
+  // cos θ = √u, the distribution of collision directions weighted by the normal speed. One point
+  // (x, y) uniform in the unit disk gives both: r² is uniform (so cos θ = r) and (x, y)/r is the
+  // azimuth, without sin/cos (which cost 5% of the loop in perf).
   Vec3 hemisphere(const Vec3& n) {
-    const double c = std::sqrt(uniform()), s = std::sqrt(1.0 - c * c);
-    const double phi = 2.0 * std::numbers::pi * uniform();
+    double x, y, r2;
+    do {
+      x = 2.0 * uniform() - 1.0, y = 2.0 * uniform() - 1.0, r2 = x * x + y * y;
+    } while (!(r2 < 1.0 && r2 > 0.0));
+    const double c = std::sqrt(r2), s = std::sqrt(1.0 - r2), f = s / c;
     // Orthonormal p, q perpendicular to n (branch-free construction of Duff et al. 2017).
     const double sign = std::copysign(1.0, n.z);
     const double a = -1.0 / (sign + n.z), b = n.x * n.y * a;
     const Vec3 p{1.0 + sign * n.x * n.x * a, sign * b, -sign * n.x};
     const Vec3 q{b, sign + n.y * n.y * a, -n.y};
-    const double cp = s * std::cos(phi), cq = s * std::sin(phi);
+    const double cp = f * x, cq = f * y;
     return {c * n.x + cp * p.x + cq * q.x, c * n.y + cp * p.y + cq * q.y, c * n.z + cp * p.z + cq * q.z};
   }
 

@@ -309,6 +309,8 @@ PlotSettings read_plot(TomlFields& f) {
   p.xlabel = f.text("xlabel", p.x);
   p.ylabel = f.text("ylabel", p.y);
   p.key = f.choice("key", {"top left", "top right", "bottom left", "bottom right"}, "top left");
+  if (f.has("species"))
+    for (double v : f.numbers("species", 0, 1e7)) p.species.push_back(static_cast<std::size_t>(v));
   if (f.has("slopes")) {
     const toml::node* n = f.node("slopes");
     if (!n->is_array()) f.fail("slopes", "expected an array", "[\"2\", \"1\", \"1/6\", \"log\"]");

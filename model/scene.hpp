@@ -85,6 +85,7 @@ struct PlotSettings {
   std::string key = "top left";  // legend position
   bool logx = false, logy = false;
   bool maxwell = false;  // also draw theory's `<y>_maxwell` column dashed (MG Fig. 7's Maxwell–Boltzmann lines)
+  std::vector<std::size_t> species;  // curves drawn (0 = the total row); empty: every species
   std::vector<std::string> slopes;  // guide lines: "2", "1", "1/6", "log"
 };
 

@@ -7,6 +7,7 @@
 
 #include "dsmc/ensemble.hpp"
 #include "dsmc_fixtures.hpp"
+#include "dsmc/event_loop.hpp"
 #include "dsmc/selectors.hpp"
 #include "model/enskog.hpp"
 #include "theory/diffusion.hpp"
@@ -64,13 +65,19 @@ TEST_CASE("elastic binary: collisions per species pair against nu_ki", "[dsmc]")
   }
 }
 
-TEST_CASE("low-rank trees propose species pairs with the exact majorant probabilities", "[dsmc]") {
+namespace {
+
+// χ² of the proposed species pairs against the selector's own class weights Σ_u∈i N_u bound_u times
+// N_k σ_ik², and the total rate against the same sum written out.
+template <class Selector>
+void check_pair_proposals(std::size_t classes, const char* name) {
   const model::Mixture mix({{1, 1, 0.1}, {2, 1.26, 0.08}, {3, 1.44, 0.06}, {4, 1.59, 0.04}, {5, 1.71, 0.02}});
   Rng rng(9, 0);
   const std::vector<std::size_t> counts = {500, 400, 300, 200, 100};
-  const Particles p = maxwellian_particles(mix, counts, {1, 1, 1, 1, 1}, false, true, rng);
+  Particles p = maxwellian_particles(mix, counts, {1, 1, 1, 1, 1}, false, true, rng);
   const PairTable pairs(mix, {}, 1500 / 0.3);  // dilute
-  const LowRankSelector sel(pairs, p);
+  const Selector sel(pairs, p, classes);
+  const SpeedClasses& c = sel.classes();
   const int draws = 1000000;
   std::vector<double> hits(25, 0.0), w(25);
   for (int j = 0; j < draws; ++j) {
@@ -78,14 +85,46 @@ TEST_CASE("low-rank trees propose species pairs with the exact majorant probabil
     hits[q.i * 5 + q.k] += 1;
   }
   double total = 0.0;
-  for (std::size_t i = 0; i < 5; ++i)
-    for (std::size_t k = 0; k < 5; ++k) total += w[i * 5 + k] = counts[i] * speed_max(p, i) * counts[k] * pairs.sigma2(i, k);
+  for (std::size_t i = 0; i < 5; ++i) {
+    double wi = 0.0;
+    for (std::size_t u = i * classes; u < (i + 1) * classes; ++u) wi += double(c.count(u)) * c.bound(u);
+    if (classes == 1) CHECK(wi == Approx(counts[i] * speed_max(p, i)).epsilon(1e-14));  // the paper's N_i vmax_i
+    for (std::size_t k = 0; k < 5; ++k) total += w[i * 5 + k] = wi * counts[k] * pairs.sigma2(i, k);
+  }
   double chi2 = 0.0;
-  for (std::size_t c = 0; c < 25; ++c) chi2 += std::pow(hits[c] - draws * w[c] / total, 2) / (draws * w[c] / total);
-  std::printf("low-rank species-pair proposals: chi2 = %.1f (24 dof)\n", chi2);
+  for (std::size_t x = 0; x < 25; ++x) chi2 += std::pow(hits[x] - draws * w[x] / total, 2) / (draws * w[x] / total);
+  std::printf("%s, %zu speed classes: species-pair proposals chi2 = %.1f (24 dof)\n", name, classes, chi2);
   CHECK(chi2 < 51.2);  // χ² with 24 degrees of freedom: P(> 51.2) = 1e-3
-  // The total rate is the same sum written out (rank-3 identity): rounding only.
-  CHECK(sel.total_rate() == Approx(pi / pairs.volume * total).epsilon(1e-12));
+  CHECK(sel.total_rate() == Approx(pi / pairs.volume * total).epsilon(1e-12));  // rounding only
+}
+
+}  // namespace
+
+TEST_CASE("low-rank and direct selectors propose species pairs with the majorant probabilities - 1 and 8 speed classes", "[dsmc]") {
+  for (std::size_t classes : {1, 8}) {
+    check_pair_proposals<LowRankSelector>(classes, "low-rank");
+    check_pair_proposals<DirectSelector>(classes, "direct");
+  }
+}
+
+TEST_CASE("speed classes: after 2e5 collisions every particle is within its class bound - classes tile each species", "[dsmc]") {
+  const model::Mixture mix({{1, 1, 0.1}, {10, 2, 0.05}, {100, 4, 0.01}});
+  Rng rng(4, 0);
+  Particles p = maxwellian_particles(mix, {3000, 1500, 300}, {1, 1, 1}, true, true, rng);
+  const PairTable pairs(mix, {}, 4800 / 0.16);
+  LowRankSelector sel(pairs, p, 8);
+  Counters c;
+  EventLoop<LowRankSelector> loop(p, sel, model::Restitution::constant(3, 0.8), rng, c, 1000000000);  // no refresh: moves only
+  while (c.accepted < 200000) loop.run_until(loop.time() + 1.0);
+  const SpeedClasses& cls = sel.classes();
+  std::size_t violations = 0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    CHECK(cls.begin(k * 8) == p.begin(k));
+    CHECK(cls.begin(k * 8 + 7) + cls.count(k * 8 + 7) == p.end(k));
+    for (std::size_t u = k * 8; u < k * 8 + 8; ++u)
+      for (std::size_t a = cls.begin(u); a < cls.begin(u) + cls.count(u); ++a) violations += std::sqrt(norm2(p.v[a])) > cls.bound(u);
+  }
+  CHECK(violations == 0);  // the majorant bound(class a) + bound(class b) >= |g| holds for every pair
 }
 
 TEST_CASE("selectors agree: 5 species - eps = 0.7 - temperatures and collisions per pair", "[dsmc]") {

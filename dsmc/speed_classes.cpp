@@ -1,0 +1,51 @@
+#include "speed_classes.hpp"
+
+#include <cmath>
+
+namespace granmix::dsmc {
+
+namespace {
+// Ratio of neighbouring class bounds (with DsmcSetup::speed_classes = 3: bounds 0.36, 0.6 and 1 of the
+// top speed). Measured on the 691-species system, one thread: acceptance 0.29 → 0.51, 2.16 → 2.40 M
+// collisions/s; 8 classes at 0.7 reach acceptance 0.63 but the larger tree and the moves cost more
+// than the rejections they save (1.87 M/s with moves down as well, 2.2 without).
+constexpr double class_ratio = 0.6;
+}  // namespace
+
+SpeedClasses::SpeedClasses(Particles& p, std::size_t classes) : C_(classes), off_(p.species() * classes + 1), bound_(p.species() * classes) {
+  refresh(p);
+}
+
+void SpeedClasses::refresh(Particles& p) {
+  std::vector<Vec3> v;
+  std::vector<Particles::Flight> f;
+  std::vector<std::size_t> cls, fill(C_);
+  for (std::size_t k = 0; k < p.species(); ++k) {
+    const std::size_t u0 = k * C_, n = p.count(k), b = p.begin(k);
+    const double top = speed_max(p, k);
+    for (std::size_t c = 0; c < C_; ++c) bound_[u0 + c] = top * std::pow(class_ratio, double(C_ - 1 - c));
+    // Counting sort of the species' records by class (stable).
+    cls.resize(n);
+    std::fill(fill.begin(), fill.end(), 0);
+    for (std::size_t j = 0; j < n; ++j) {
+      const double s = std::sqrt(norm2(p.v[b + j]));
+      std::size_t c = 0;
+      while (c + 1 < C_ && s > bound_[u0 + c]) ++c;
+      cls[j] = c, ++fill[c];
+    }
+    off_[u0] = b;
+    for (std::size_t c = 1; c < C_; ++c) off_[u0 + c] = off_[u0 + c - 1] + fill[c - 1];
+    if (C_ == 1) continue;  // one class: nothing moves
+    v.assign(p.v.begin() + b, p.v.begin() + b + n);
+    if (p.track_displacement) f.assign(p.flight.begin() + b, p.flight.begin() + b + n);
+    std::vector<std::size_t> next(off_.begin() + u0, off_.begin() + u0 + C_);
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t to = next[cls[j]]++;
+      p.v[to] = v[j];
+      if (p.track_displacement) p.flight[to] = f[j];
+    }
+  }
+  off_[p.species() * C_] = p.size();
+}
+
+}  // namespace granmix::dsmc
