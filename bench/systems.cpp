@@ -40,10 +40,8 @@ BenchSystem exponential_691(double n1) {
   const model::Mixture mix = model::exponential_mixture(e);
   std::vector<std::size_t> counts;
   std::vector<double> mass, sigma;
-  for (std::size_t k = 0; k < mix.size(); ++k) {
-    counts.push_back(static_cast<std::size_t>(std::floor(n1 * std::exp(-0.01 * double(k)))));
-    mass.push_back(mix[k].mass), sigma.push_back(mix[k].diameter);
-  }
+  for (double c : model::exponential_counts(e)) counts.push_back(static_cast<std::size_t>(c));
+  for (std::size_t k = 0; k < mix.size(); ++k) mass.push_back(mix[k].mass), sigma.push_back(mix[k].diameter);
   return make("exp691", counts, mass, sigma, 0.99);
 }
 

@@ -43,15 +43,21 @@ Mixture montanero_garzo_binary(double mu, double delta, double w, double n_star)
 
 namespace granmix::model {
 
-Mixture exponential_mixture(const Exponential& e) {
+std::vector<double> exponential_counts(const Exponential& e) {
   std::vector<double> counts;
-  double N = 0.0;
   for (std::size_t j = 0; j < e.species; ++j) {
     const double c = std::floor(e.n1_particles * std::exp(-e.decay * double(j)));
     if (c < 1.0) break;  // counts only fall with k
-    counts.push_back(c), N += c;
+    counts.push_back(c);
   }
   if (counts.empty()) throw std::invalid_argument("exponential mixture: n1_particles must be >= 1");
+  return counts;
+}
+
+Mixture exponential_mixture(const Exponential& e) {
+  const std::vector<double> counts = exponential_counts(e);
+  double N = 0.0;
+  for (double c : counts) N += c;
   std::vector<Species> s;
   for (std::size_t j = 0; j < counts.size(); ++j) {
     const double k = double(j + 1);

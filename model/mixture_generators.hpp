@@ -51,5 +51,7 @@ struct Exponential {
 };
 
 Mixture exponential_mixture(const Exponential& e);
+// The particle counts N_k of that mixture (the species kept).
+std::vector<double> exponential_counts(const Exponential& e);
 
 }  // namespace granmix::model
