@@ -37,6 +37,15 @@ std::size_t last_block_start(const model::Table& t) {
   return r;
 }
 
+// The error-bar columns of a DSMC curve: ±err, except that on a log axis a bar reaching zero or below
+// (a histogram bin with a handful of counts) stops at a tenth of the value instead of stretching the
+// axis over ten decades.
+std::string error_bar(const model::PlotSettings& p) {
+  const std::string y = "column('" + p.y + "')", e = "column('" + p.y + "_err')";
+  if (!p.logy) return "(" + e + ")";
+  return "(" + y + " - " + e + " > " + y + "/10 ? " + y + " - " + e + " : " + y + "/10):(" + y + " + " + e + ")";
+}
+
 // x = "species": one curve over species at the last sample time (v1 Fig. 8).
 std::vector<std::string> species_plots(const model::PlotSettings& p, const model::Table& theory, const model::Table* dsmc) {
   std::vector<std::string> plots;
@@ -44,9 +53,9 @@ std::vector<std::string> species_plots(const model::PlotSettings& p, const model
                               "title 'theory, t = {:g}'",
                               last_block_start(theory), p.y, theory.rows.back()[0]));
   if (dsmc && dsmc->column(p.y + "_err") >= 0)
-    plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):(column('{}_err')) with yerrorbars "
+    plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):{} with yerrorbars "
                                 "ls 2 pt 7 ps 0.6 title 'DSMC'",
-                                last_block_start(*dsmc), p.y, p.y));
+                                last_block_start(*dsmc), p.y, error_bar(p)));
   return plots;
 }
 
@@ -87,9 +96,9 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
     if (dsmc && dsmc->column(p.y + "_err") >= 0 && dsmc->column(p.x) >= 0) {
       const auto d = std::find(dcycle.begin(), dcycle.end(), k);
       if (d != dcycle.end())
-        plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):(column('{}_err')) with yerrorbars ls {} "
+        plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):{} with yerrorbars ls {} "
                                     "pt 7 ps 0.6 title '{} DSMC'",
-                                    dcycle.size(), d - dcycle.begin(), p.x, p.y, p.y, ls, label));
+                                    dcycle.size(), d - dcycle.begin(), p.x, p.y, error_bar(p), ls, label));
     }
   }
   // Guide slopes, anchored on the first species curve: t² at its first point, the others at its last.
