@@ -230,14 +230,14 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
   for (const char* key : {"scene", "pass", "quantities", "theory_seconds", "dsmc_seconds", "collisions", "collisions_per_second",
                           "acceptance", "particles", "replicas", "seed", "fidelity"})
     CHECK(rep.contains(key));
-  // The scene passes: γ within 1.5% (the Maxwellian ODE's stated model error) or 4σ at every point.
+  // The scene passes: γ within 2.1% (the Maxwellian ODE's model gap plus 4 quick standard errors) or 4σ.
   CHECK(rep["pass"].get<bool>());
   CHECK(rep["quantities"]["gamma"]["failed"].get<int>() == 0);
-  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.015);
+  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.021);
   // The same scene with an impossible tolerance fails with exit code 1 and says so.
   std::ifstream in(test::scene_path("mg-fig01.toml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string loose = "relative = 0.015, z = 4";
+  const std::string loose = "relative = 0.021, z = 4";
   const auto at = text.find(loose);
   REQUIRE(at != std::string::npos);
   text.replace(at, loose.size(), "relative = 1e-9, z = 0");
