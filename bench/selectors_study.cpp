@@ -97,7 +97,7 @@ StudyResult selectors_study(const StudyOptions& o) {
                               r.acceptance(), ns, bytes, t_end});
     out.json.push_back(fmt::format(
         "{{\"selector\": \"{}\", \"system\": \"{}\", \"species\": {}, \"particles\": {}, \"collisions\": {}, \"trials\": {}, "
-        "\"seconds\": {:.6f}, \"collisions_per_second\": {:.1f}, \"acceptance\": {:.5f}, \"trials_per_second\": {:.1f}, "
+        "\"seconds\": {:.6f}, \"collisions_per_second\": {:.1f}, \"acceptance\": {:.6g}, \"trials_per_second\": {:.1f}, "
         "\"ns_per_collision\": {:.2f}, \"bytes_per_particle\": {}, \"t_end\": {:.6g}}}",
         dsmc::to_string(c.method), c.system.name, r.species, particles, r.accepted, r.trials, r.seconds, cps, r.acceptance(), tps, ns,
         bytes, t_end));

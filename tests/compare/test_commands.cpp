@@ -334,3 +334,30 @@ TEST_CASE("settled distribution of an elastic binary: the DSMC histogram is the 
   CHECK(ds.columns == std::vector<std::string>{"v", "species", "phi", "phi_err", "delta", "delta_err", "G", "G_err"});
   CHECK(ds.rows.size() == 48);
 }
+
+TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of design.md 3 - table and figure written", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("bench");
+  const auto r = test::run_granmix("bench selectors --quick --json --repeats 1 --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  std::istringstream lines(r.output);
+  std::size_t cases = 0;
+  for (std::string line; std::getline(lines, line);) {
+    if (line.empty() || line[0] != '{') continue;
+    const auto j = nlohmann::json::parse(line);
+    std::vector<std::string> keys;
+    for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
+    // design.md §3 names these nine; extensions may follow, none may be renamed or missing.
+    for (const char* k : {"selector", "system", "species", "particles", "collisions", "trials", "seconds", "collisions_per_second", "acceptance"})
+      CHECK(j.contains(k));
+    CHECK(j["collisions"].get<double>() <= j["trials"].get<double>());
+    // acceptance is printed with 6 significant digits: it must be the ratio to that precision
+    CHECK(j["acceptance"].get<double>() == Approx(j["collisions"].get<double>() / j["trials"].get<double>()).epsilon(1e-5));
+    ++cases;
+  }
+  CHECK(cases >= 20);
+  for (const char* f : {"selectors.tsv", "selectors.gp"}) CHECK(std::filesystem::exists(d / "bench" / "selectors" / f));
+  const auto bad = test::run_granmix("bench nosuchstudy --out " + d.string());
+  CHECK(bad.code == 2);
+  CHECK(bad.output.find("selectors, theory, dsmc-error, methods") != std::string::npos);
+}
