@@ -113,7 +113,7 @@ StudyResult theory_study(const StudyOptions& o) {
     const double secs = median_seconds(o.repeats, [&] { v = poly_curve(rtol, steps); });
     row(1, rtol, secs, max_rel(v, ref_poly), steps);
   }
-  // Eq. (17) quadrature against the VACF ODE, binary to t = 1e4 (the VACF ODE's clock is linear).
+  // Eq. (17) quadrature against the VACF ODE, binary to t = 1e4.
   const std::vector<double> t4 = log_times(1e-2, 1e4, 16);
   auto msd_curve = [&](double rtol, bool vacf, long& steps) {
     theory::TemperatureOptions opt;

@@ -41,11 +41,7 @@ model::Mixture listed_mixture(const HcsOptions& o) {
     s.push_back({o.mass[k], o.diameter[k], o.density[k]});
   }
   model::Mixture mix(std::move(s));
-  if (o.nstar > 0) {  // rescale the total density so that n σ_12³ = n* (σ_11 for one species)
-    const double s12 = mix.sigma(0, mix.size() > 1 ? 1 : 0);
-    const double scale = o.nstar / (mix.total_density() * s12 * s12 * s12);
-    for (std::size_t k = 0; k < mix.size(); ++k) mix = mix.with_density(k, mix[k].density * scale);
-  }
+  if (o.nstar > 0) mix = model::with_reduced_density(mix, o.nstar);
   return mix;
 }
 

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "model/enskog.hpp"
+#include "theory/scene_theory.hpp"
 #include "theory/shell_average.hpp"
 #include "theory/sonine_hcs.hpp"
 
@@ -30,19 +30,20 @@ model::Table settled_distribution_table(const model::Scene& s, const DsmcSetup& 
   const double m1 = s.mixture[0].mass, m2 = s.mixture[1].mass, v0sq = 2.0 * T * (m1 + m2) / (m1 * m2);
   // G_k's weight exp(2β_k v*/ζ*) is part of MG's definition (Eq. 30), taken from the first-Sonine
   // β_k and ζ*: the same function multiplies theory and simulation, so it cannot favour either.
-  const theory::SonineHcs h =
-      theory::sonine_hcs(s.mixture, s.restitution, s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(M));
+  const theory::SonineHcs h = theory::sonine_hcs(s.mixture, s.restitution, theory::scene_contact_values(s));
+  std::vector<double> lambda(M);
+  std::vector<std::pair<double, double>> cumulant(M);
+  for (std::size_t k = 0; k < M; ++k) lambda[k] = s.mixture[k].mass * v0sq / (2.0 * Tk[k]), cumulant[k] = time_mean(r.cumulant, J, M, k);
   model::Table t;
   t.columns = {"v", "species", "phi", "phi_err", "delta", "delta_err", "G", "G_err"};
   const double width = d.distribution_vmax / double(B);
   for (std::size_t b = 0; b < B; ++b) {
     const double lo = b * width, hi = lo + width, v = 0.5 * (lo + hi);
     for (std::size_t k = 0; k < M; ++k) {
-      const double lambda = s.mixture[k].mass * v0sq / (2.0 * Tk[k]);
       // The bin's Maxwellian is its shell average, as the histogram's Φ is (theory/shell_average.hpp).
-      const double maxwell = theory::shell_average([&](double u) { return theory::maxwellian_phi(lambda, u); }, lo, hi);
+      const double maxwell = theory::shell_average([&](double u) { return theory::maxwellian_phi(lambda[k], u); }, lo, hi);
       const double phi = r.distribution.mean[k * B + b], phi_err = r.distribution.err[k * B + b];
-      const auto [c, c_err] = time_mean(r.cumulant, J, M, k);
+      const auto [c, c_err] = cumulant[k];
       // Δ = (2/c)(Φ/Φ_M − 1); its error from Φ and from c (∂Δ/∂c = −Δ/c), as if independent.
       const double delta = 2.0 / c * (phi / maxwell - 1.0);
       const double delta_err = std::hypot(2.0 * phi_err / (c * maxwell), delta * c_err / c);

@@ -3,9 +3,11 @@
 // every observable is reported as mean and standard error over replicas. Results do not depend on
 // the number of threads: replica r always computes the same numbers and the reduction runs in
 // replica order.
+#include <cmath>
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/mixture.hpp"
@@ -56,6 +58,12 @@ struct DsmcSetup {
 struct Estimate {
   std::vector<double> mean, err;  // standard error of the mean over replicas (0 for one replica)
 };
+
+// a/b of two (value, standard error) pairs, relative errors added in quadrature (taken as independent).
+inline std::pair<double, double> ratio(std::pair<double, double> a, std::pair<double, double> b) {
+  const double q = a.first / b.first;
+  return {q, std::abs(q) * std::hypot(a.second / a.first, b.second / b.first)};
+}
 
 struct DsmcResult {
   Method method = Method::direct;

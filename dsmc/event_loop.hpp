@@ -127,7 +127,6 @@ class EventLoop {
     return (q.i == 0 ? e(q.a) : 0.0) + (q.k == 0 ? e(q.b) : 0.0);
   }
 
-
   Particles& p_;
   Selector& sel_;
   const model::Restitution& law_;

@@ -29,12 +29,6 @@ std::pair<double, double> weighted(const model::Mixture& mix, const Estimate& e,
   return {m, std::sqrt(v)};
 }
 
-// a/b with the relative errors of a and b added in quadrature (the two taken as independent).
-std::pair<double, double> ratio(std::pair<double, double> a, std::pair<double, double> b) {
-  const double q = a.first / b.first;
-  return {q, std::abs(q) * std::hypot(a.second / a.first, b.second / b.first)};
-}
-
 Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult& r) {
   const auto& o = s.observables;
   const std::size_t M = s.mixture.size();

@@ -36,6 +36,13 @@ std::vector<std::vector<double>> enskog_contact_values(const Mixture& mix) {
   return chi;
 }
 
+Mixture with_reduced_density(const Mixture& mix, double n_star) {
+  const double s12 = mix.sigma(0, mix.size() > 1 ? 1 : 0), scale = n_star / (mix.total_density() * s12 * s12 * s12);
+  Mixture out = mix;
+  for (std::size_t k = 0; k < mix.size(); ++k) out = out.with_density(k, mix[k].density * scale);
+  return out;
+}
+
 std::vector<std::vector<double>> dilute_contact_values(std::size_t species) {
   return std::vector<std::vector<double>>(species, std::vector<double>(species, 1.0));
 }

@@ -17,4 +17,8 @@ std::vector<std::vector<double>> dilute_contact_values(std::size_t species);
 // Volume packing fraction ν = (π/6) Σ n_i σ_i³ (MG text below Eq. 26).
 double packing_fraction(const Mixture& mix);
 
+// The mixture with all densities scaled so that MG's reduced density n σ_12³ = n_star (σ_11 for one
+// species; MG Sec. 2), composition unchanged.
+Mixture with_reduced_density(const Mixture& mix, double n_star);
+
 }  // namespace granmix::model

@@ -7,6 +7,7 @@
 #include <regex>
 #include <sstream>
 
+#include "enskog.hpp"
 #include "errors.hpp"
 #include "mixture_generators.hpp"
 #include "toml_fields.hpp"
@@ -427,10 +428,7 @@ Scene sweep_point(const Scene& s, double x) {
     case Sweep::Parameter::density: p.mixture = s.mixture.with_density(s.theory.sweep->species, x); break;
     case Sweep::Parameter::n_star: {  // all densities scaled so that n σ12³ = x (x = 0: the dilute gas as given)
       p.enskog = x > 0.0;
-      if (x > 0.0) {
-        const double s12 = s.mixture.sigma(0, 1), scale = x / (s.mixture.total_density() * s12 * s12 * s12);
-        for (std::size_t k = 0; k < s.mixture.size(); ++k) p.mixture = p.mixture.with_density(k, s.mixture[k].density * scale);
-      }
+      if (x > 0.0) p.mixture = with_reduced_density(s.mixture, x);
       break;
     }
   }

@@ -38,10 +38,7 @@ Table sweep_table(const model::Scene& s) {
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
   if (relative) t.columns.push_back("gamma_ratio");
   if (o.cumulant) t.columns.push_back("c");
-  auto sonine_of = [](const model::Scene& p, bool maxwell) {
-    const auto chi = p.enskog ? model::enskog_contact_values(p.mixture) : model::dilute_contact_values(p.mixture.size());
-    return sonine_hcs(p.mixture, p.restitution, chi, maxwell);
-  };
+  auto sonine_of = [](const model::Scene& p, bool maxwell) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), maxwell); };
   const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0), false).gamma() : nan;
   for (double x : sw.values) {
     const model::Scene p = model::sweep_point(s, x);
@@ -67,8 +64,7 @@ Table sweep_table(const model::Scene& s) {
 // at the bin centre v*, and the Maxwellian G.
 Table distribution_table(const model::Scene& s) {
   const auto& o = s.observables;
-  const SonineHcs h =
-      sonine_hcs(s.mixture, s.restitution, s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size()));
+  const SonineHcs h = sonine_hcs(s.mixture, s.restitution, scene_contact_values(s));
   Table t;
   t.columns = {"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"};
   const double width = o.distribution_vmax / double(o.distribution_bins);
@@ -186,7 +182,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
 double scene_time_unit(const model::Scene& s) {
   if (!s.time_unit_mg) return 1.0;
   const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
-  return mg_time_unit(s.mixture, s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size()),
+  return mg_time_unit(s.mixture, scene_contact_values(s),
                       initial_temperatures(s.initial, rates)[0]);
 }
 
@@ -196,6 +192,10 @@ void rescale_time_columns(model::Table& table, double factor) {
     if (name == "t" || name == "lag" || name == "t_s" || name == "t_s_err")
       for (auto& row : table.rows) row[c] *= factor;
   }
+}
+
+std::vector<std::vector<double>> scene_contact_values(const model::Scene& s) {
+  return s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size());
 }
 
 CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, const model::Restitution& law) {

@@ -21,6 +21,9 @@ TheoryResult run_theory(const model::Scene& scene);
 double scene_time_unit(const model::Scene& scene);
 void rescale_time_columns(model::Table& table, double factor);
 
+// χ_ij of a scene's mixture: Enskog (MG Eq. 26) when the scene asks for it, else 1.
+std::vector<std::vector<double>> scene_contact_values(const model::Scene& scene);
+
 // The rates of a scene's mixture and law, with χ from Enskog or 1.
 CollisionRates scene_rates(const model::Scene& scene, const model::Mixture& mix, const model::Restitution& law);
 
