@@ -38,7 +38,7 @@ StudyResult methods_study(const StudyOptions& o) {
     dsmc::DsmcSetup x = s;
     x.method = m, x.time_step_factor = factor;
     const dsmc::DsmcResult r = dsmc::run_ensemble(x);
-    const auto [g, ge] = dsmc::ratio({r.T.mean[0], r.T.err[0]}, {r.T.mean[1], r.T.err[1]});
+    const auto [g, ge] = dsmc::replica_ratio(r.T, 0, r.T, 1);
     return std::array<double, 5>{r.seconds_setup + r.seconds_loop + r.seconds_sample, r.cumulant.mean[0], r.cumulant.err[0], g, ge};
   };
   const auto exact = measure(dsmc::Method::direct, 0.0);

@@ -35,7 +35,7 @@ std::string label(const model::CompareQuantity& q) {
 }
 
 std::string tolerance_text(const model::CompareQuantity& q) {
-  return fmt::format("{:g} or {:g}σ", q.relative, q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
+  return fmt::format("{:g}+{:g}σ", q.relative, q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
 }
 
 nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
@@ -53,7 +53,9 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
   const int tt = 0, ts = theory.column("species"), dt = dsmc.column(x), ds = dsmc.column("species");
   if (ts < 0 || dt < 0 || ds < 0) return out;
   for (const auto& q : quantities) {
-    const int a = theory.column(q.name), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
+    const std::string& predicted = q.theory.empty() ? q.name : q.theory;
+    const int a = theory.column(predicted), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
+    const int paper = theory.column(predicted + "_paper");
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];
@@ -68,7 +70,8 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
-      d.pass = std::abs(diff) <= std::max({q.relative * std::abs(d.theory), q.z * d.dsmc_err, q.absolute});
+      d.pass = std::abs(diff) <= q.relative * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute;
+      d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;
       out.push_back(d);
     }
   }
@@ -87,6 +90,7 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
       if (!x.pass) ++r.failed;
       r.max_rel = std::max(r.max_rel, std::abs(x.rel));
       r.max_z = std::max(r.max_z, std::abs(x.z));
+      if (std::isfinite(x.paper_rel)) r.max_paper_rel = std::isfinite(r.max_paper_rel) ? std::max(r.max_paper_rel, std::abs(x.paper_rel)) : std::abs(x.paper_rel);
     }
     out.push_back(r);
   }
@@ -94,10 +98,10 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
 }
 
 std::string format_deviations(const std::string& provenance, const std::string& x, const std::vector<Deviation>& d) {
-  std::string s = provenance + x + "\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\n";
+  std::string s = provenance + x + "\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\tpaper_rel\n";
   for (const auto& x : d)
-    s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
-                     int(x.judged), int(x.pass));
+    s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
+                     int(x.judged), int(x.pass), x.paper_rel);
   return s;
 }
 

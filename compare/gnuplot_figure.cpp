@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <tuple>
 
 namespace granmix::compare {
 
@@ -90,6 +91,12 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
     const int ls = k == 0 ? 9 : 1 + (k - 1) % 4;
     plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} title '{} theory'", cycle.size(),
                                 o, p.x, p.y, ls, label));
+    // The paper level's curve beside the judged level's (kinetic scenes), and what the DSMC of a
+    // D_k/D_1 sweep measures (MSD increments), so the points are read against the right line.
+    for (const auto& [suffix, style, what] : {std::tuple{"_paper", "dt 2", "paper"}, std::tuple{"_increment", "dt 3", "MSD increments"}})
+      if (theory.column(p.y + suffix) >= 0)
+        plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}{}')) with lines ls {} {} title '{} {}'",
+                                    cycle.size(), o, p.x, p.y, suffix, ls, style, label, what));
     if (p.maxwell && theory.column(p.y + "_maxwell") >= 0)
       plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}_maxwell')) with lines ls {} dt 2 title '{} Maxwell'",
                                   cycle.size(), o, p.x, p.y, ls, label));

@@ -36,7 +36,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   j["source"] = s.source;
   j["pass"] = o.pass;
   j["quantities"] = nlohmann::ordered_json::object();
-  for (const auto& q : o.quantities)
+  for (const auto& q : o.quantities) {
     j["quantities"][label(q.spec)] = {{"max_rel", q.max_rel},
                                     {"max_z", q.max_z},
                                     {"tolerance", tolerance_json(q.spec)},
@@ -44,6 +44,8 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
                                     {"judged", q.judged},
                                     {"failed", q.failed},
                                     {"why", q.spec.why}};
+    if (std::isfinite(q.max_paper_rel)) j["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
+  }
   j["theory_seconds"] = o.theory_seconds;
   j["theory_error"] = o.theory_error;
   j["dsmc_seconds"] = o.dsmc_seconds;

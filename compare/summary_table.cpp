@@ -11,8 +11,8 @@
 namespace granmix::compare {
 
 std::string summary_header() {
-  return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
-                     "pass", "theory s (error)", "DSMC s", "collisions/s");
+  return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>9} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
+                     "pass", "paper rel", "theory s (error)", "DSMC s", "collisions/s");
 }
 
 std::string summary_lines(const SceneOutcome& o) {
@@ -20,31 +20,34 @@ std::string summary_lines(const SceneOutcome& o) {
   const std::string cps = o.collisions_per_second > 0 ? fmt::format("{:.3g}", o.collisions_per_second) : "-";
   const std::string dsmc = o.dsmc_seconds > 0 ? fmt::format("{:.2f}", o.dsmc_seconds) : "-";
   if (o.quantities.empty())
-    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only", o.pass ? "yes" : "NO",
-                       theory, dsmc, cps);
+    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>9} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only",
+                       o.pass ? "yes" : "NO", "-", theory, dsmc, cps);
   std::string s;
   for (const auto& q : o.quantities)
-    s += fmt::format("{:<24} {:<8} {:>9.4f} {:>8.2f} {:>16} {:<5} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
-                     tolerance_text(q.spec), q.pass() ? "yes" : "NO", theory, dsmc, cps);
+    s += fmt::format("{:<24} {:<18} {:>9.4f} {:>8.2f} {:>16} {:<5} {:>9.4f} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
+                     tolerance_text(q.spec), q.pass() ? "yes" : "NO", q.max_paper_rel, theory, dsmc, cps);
   return s;
 }
 
 void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors) {
   std::string tsv = "# granmix validate summary (" + utc_now_iso8601() + ")\n";
-  tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\n";
+  tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\t"
+         "paper_max_rel\n";
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
                                     {"theory_error", o.theory_error}, {"dsmc_seconds", o.dsmc_seconds},
                                     {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()}};
     if (o.quantities.empty())
-      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
+      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
                          o.dsmc_seconds, o.collisions_per_second);
     for (const auto& q : o.quantities) {
-      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative, q.spec.z,
-                         int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second, q.spec.absolute);
+      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative,
+                         q.spec.z, int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second, q.spec.absolute,
+                         q.max_paper_rel);
       scene["quantities"][label(q.spec)] = {{"max_rel", q.max_rel}, {"max_z", q.max_z}, {"tolerance", tolerance_json(q.spec)},
                                           {"pass", q.pass()}};
+      if (std::isfinite(q.max_paper_rel)) scene["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
     }
     j.push_back(scene);
   }

@@ -221,8 +221,11 @@ Estimate reduce(const std::vector<ReplicaRecord>& recs, std::vector<double> Repl
   Estimate e;
   const std::size_t n = (recs.front().*field).size(), R = recs.size();
   e.mean.assign(n, 0.0), e.err.assign(n, 0.0);
-  for (const auto& r : recs)
+  e.replicas.reserve(n * R);
+  for (const auto& r : recs) {
+    e.replicas.insert(e.replicas.end(), (r.*field).begin(), (r.*field).end());
     for (std::size_t j = 0; j < n; ++j) e.mean[j] += (r.*field)[j] / double(R);
+  }
   if (R > 1) {
     for (const auto& r : recs)
       for (std::size_t j = 0; j < n; ++j) e.err[j] += std::pow((r.*field)[j] - e.mean[j], 2);

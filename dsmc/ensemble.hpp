@@ -55,12 +55,45 @@ struct DsmcSetup {
   std::function<void(std::size_t done, std::size_t total)> progress;  // called as replicas finish
 };
 
+// Mean and standard error over independent replicas of a vector of observables, and each
+// replica's own values, from which any derived quantity gets its error (jackknife below).
 struct Estimate {
   std::vector<double> mean, err;  // standard error of the mean over replicas (0 for one replica)
+  std::vector<double> replicas;   // [r * mean.size() + i]: replica r's value of element i
+  std::size_t count() const { return mean.empty() ? 0 : replicas.size() / mean.size(); }
+  // Mean of element i over every replica but `skip` (skip >= count(): over all of them).
+  double mean_without(std::size_t i, std::size_t skip) const {
+    const std::size_t R = count();
+    if (skip >= R || R < 2) return mean[i];
+    return (double(R) * mean[i] - replicas[skip * mean.size() + i]) / double(R - 1);
+  }
 };
 
-// a/b of two (value, standard error) pairs, relative errors added in quadrature (taken as independent).
-inline std::pair<double, double> ratio(std::pair<double, double> a, std::pair<double, double> b) {
+// A quantity derived from replica means, f(skip) = its value from the means without replica `skip`
+// (f(R): all replicas), with the jackknife standard error sqrt((R−1)/R Σ (f(r) − f̄)²). For a
+// linear f it is exactly the standard error of the mean; for ratios and weighted sums of species it
+// keeps the correlations between the parts (species trade energy; an MSD increment shares its
+// endpoints' noise) that propagation "as if independent" gets wrong.
+template <class F>
+std::pair<double, double> jackknife(std::size_t R, F f) {
+  const double all = f(R);
+  if (R < 2) return {all, 0.0};
+  std::vector<double> loo(R);
+  double m = 0.0;
+  for (std::size_t r = 0; r < R; ++r) loo[r] = f(r), m += loo[r] / double(R);
+  double v = 0.0;
+  for (double x : loo) v += (x - m) * (x - m);
+  return {all, std::sqrt(double(R - 1) / double(R) * v)};
+}
+
+// num[a]/den[b] of one run (the same replicas), with the jackknife error.
+inline std::pair<double, double> replica_ratio(const Estimate& num, std::size_t a, const Estimate& den, std::size_t b) {
+  return jackknife(num.count(), [&](std::size_t skip) { return num.mean_without(a, skip) / den.mean_without(b, skip); });
+}
+
+// a/b of two results of INDEPENDENT runs (value, standard error): relative errors in quadrature.
+// Within one run use jackknife() instead: its parts share the replicas.
+inline std::pair<double, double> ratio_of_independent(std::pair<double, double> a, std::pair<double, double> b) {
   const double q = a.first / b.first;
   return {q, std::abs(q) * std::hypot(a.second / a.first, b.second / b.first)};
 }

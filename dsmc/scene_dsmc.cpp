@@ -16,22 +16,11 @@ namespace {
 
 using model::Table;
 
-// Density-weighted mean over species and its standard error (replica correlations between
-// species are ignored: species errors are combined as if independent).
-std::pair<double, double> weighted(const model::Mixture& mix, const Estimate& e, std::size_t j) {
-  const std::size_t M = mix.size();
-  double m = 0.0, v = 0.0;
-  for (std::size_t k = 0; k < M; ++k) {
-    const double w = mix[k].density / mix.total_density();
-    m += w * e.mean[j * M + k];
-    v += w * w * e.err[j * M + k] * e.err[j * M + k];
-  }
-  return {m, std::sqrt(v)};
-}
-
+// Every derived DSMC value below is a function of replica means; its error is the jackknife over
+// replicas (ensemble.hpp), so sums over species and ratios keep their correlations.
 Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult& r) {
   const auto& o = s.observables;
-  const std::size_t M = s.mixture.size();
+  const std::size_t M = s.mixture.size(), R = r.replicas;
   Table t;
   t.columns = {"t", "species"};
   auto add = [&](const char* name) { t.columns.push_back(name), t.columns.push_back(std::string(name) + "_err"); };
@@ -48,33 +37,35 @@ Table make_table(const model::Scene& s, const DsmcSetup& setup, const DsmcResult
     for (std::size_t k = 0; k <= M; ++k) {
       if (k == 0 && M == 1) continue;
       std::vector<double> row = {setup.times[j], double(k)};
+      // Species k, or for k = 0 the density-weighted mean over species (⟨T⟩, total MSD v1 Eq. 16).
       auto species_value = [&](const Estimate& e) {
         if (k > 0) return std::pair{e.mean[j * M + k - 1], e.err[j * M + k - 1]};
-        return weighted(s.mixture, e, j);
+        return jackknife(R, [&](std::size_t skip) {
+          double m = 0.0;
+          for (std::size_t a = 0; a < M; ++a) m += s.mixture.fraction(a) * e.mean_without(j * M + a, skip);
+          return m;
+        });
       };
       auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
       if (o.rescaled_time) push({r.rescaled_time.mean[j], r.rescaled_time.err[j]});
       if (o.temperatures) push(species_value(r.T));
       if (o.msd) push(species_value(r.msd));
-      if (o.msd_ratio)  // ⟨R_k²⟩/⟨R_1²⟩ (v1 Fig. 8)
-        push(k == 0 ? std::pair{nan, nan}
-                    : ratio({r.msd.mean[j * M + k - 1], r.msd.err[j * M + k - 1]}, {r.msd.mean[j * M], r.msd.err[j * M]}));
+      // ⟨R_k²⟩/⟨R_1²⟩ (v1 Fig. 8); species 1 is 1 by construction: not a measurement.
+      if (o.msd_ratio) push(k <= 1 ? std::pair{nan, nan} : replica_ratio(r.msd, j * M + k - 1, r.msd, j * M));
       if (o.cumulant) push(k > 0 ? species_value(r.cumulant) : std::pair{nan, nan});
-      if (o.gamma)  // γ = T_1/T_2 (MG Eq. 45 defines γ)
-        push(k == 0 ? ratio({r.T.mean[j * M], r.T.err[j * M]}, {r.T.mean[j * M + 1], r.T.err[j * M + 1]}) : std::pair{nan, nan});
+      if (o.gamma) push(k == 0 ? replica_ratio(r.T, j * M, r.T, j * M + 1) : std::pair{nan, nan});  // γ = T_1/T_2 (MG Eq. 45)
       if (o.tamsd) {
         row.push_back(setup.times[j]);  // lags are the time grid (as in theory.tsv)
         push(k > 0 ? std::pair{r.tamsd.mean[j * M + k - 1], r.tamsd.err[j * M + k - 1]} : std::pair{nan, nan});
       }
       // Collisions per particle: species k takes part in C_ik for i != k once and in C_kk twice; the
-      // whole system's count sums the species (each collision twice), errors as if independent.
-      double c = 0.0, ce2 = 0.0, particles = 0.0;
-      for (std::size_t a = (k == 0 ? 0 : k - 1); a < (k == 0 ? M : k); ++a) {
-        c += r.species_collisions.mean[j * M + a];
-        ce2 += r.species_collisions.err[j * M + a] * r.species_collisions.err[j * M + a];
-      }
-      particles = k == 0 ? double(r.particles) : double(setup.counts[k - 1]);
-      push({c / particles, std::sqrt(ce2) / particles});
+      // whole system's count sums the species (each collision twice).
+      const double particles = k == 0 ? double(r.particles) : double(setup.counts[k - 1]);
+      push(jackknife(R, [&](std::size_t skip) {
+        double c = 0.0;
+        for (std::size_t a = (k == 0 ? 0 : k - 1); a < (k == 0 ? M : k); ++a) c += r.species_collisions.mean_without(j * M + a, skip);
+        return c / particles;
+      }));
       t.rows.push_back(std::move(row));
     }
   }
@@ -129,24 +120,25 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
   for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) {
     const double x = s.dsmc.at[n];
     const DsmcRun r = run_at(x, seed + 1000003 * (n + 1));
-    const std::size_t first = 0, last = r.table.rows.size() - per_time;
+    const std::size_t last = r.table.rows.size() - per_time;
+    const std::size_t J = r.setup.times.size();
     for (std::size_t k = (o.gamma ? 0 : 1); k <= M; ++k) {
       std::vector<double> row = {x, double(k)};
       auto push = [&](std::pair<double, double> v) { row.push_back(v.first), row.push_back(v.second); };
-      if (o.d_ratio) {  // settled D_k/D_1 = MSD increment of k over that of species 1 (v1 Eq. 19, 21)
-        if (k <= 1) {
-          push(k == 0 ? std::pair{nan, nan} : std::pair{1.0, 0.0});
-        } else {
-          auto increment = [&](std::size_t kk) {
-            const auto a = cell(r.table, row_of(first, kk), "msd"), b = cell(r.table, row_of(last, kk), "msd");
-            return std::pair{b.first - a.first, std::hypot(a.second, b.second)};  // errors as if independent: an upper bound
-          };
-          push(ratio(increment(k), increment(1)));
-        }
+      if (o.d_ratio) {
+        // Settled D_k/D_1 measured as the ratio of MSD increments between the first and the last
+        // sample time (theory predicts exactly this: D_ratio_increment). Species 1 is 1 by
+        // construction and not reported. Jackknife: the two increments share replicas.
+        const Estimate& msd = r.result.msd;
+        auto increment = [&](std::size_t kk, std::size_t skip) {
+          return msd.mean_without((J - 1) * M + kk - 1, skip) - msd.mean_without(kk - 1, skip);
+        };
+        push(k <= 1 ? std::pair{nan, nan}
+                    : jackknife(r.result.replicas, [&](std::size_t skip) { return increment(k, skip) / increment(1, skip); }));
       }
       const auto gamma = k == 0 && o.gamma ? cell(r.table, row_of(last, 0), "gamma") : std::pair{nan, nan};
       if (o.gamma) push(gamma);
-      if (relative) push(k == 0 ? ratio(gamma, gamma0) : std::pair{nan, nan});  // independent runs: errors add in quadrature
+      if (relative) push(k == 0 ? ratio_of_independent(gamma, gamma0) : std::pair{nan, nan});  // two independent runs
       if (o.cumulant) push(k == 0 ? std::pair{nan, nan} : cell(r.table, row_of(last, k), "c"));
       t.rows.push_back(std::move(row));
     }

@@ -190,6 +190,7 @@ Observables read_observables(TomlFields& f) {
 
 TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   TheorySettings s;
+  s.level = f.choice("level", {"paper", "kinetic"}, "paper");
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
   // 1e-14: below it CVODE works at rounding level; 1e-3: above it no comparison means anything.
@@ -286,6 +287,9 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     TomlFields q(*e.as_table(), f.file(), "compare.quantities[" + std::to_string(out.size() + 1) + "]");
     CompareQuantity c;
     c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
+    // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
+    // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
+    c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);

@@ -41,6 +41,10 @@ struct Sweep {
 };
 
 struct TheorySettings {
+  // paper: the papers' closure (Maxwellian rates, the `msd` form, v1 Eq. 19 D); kinetic: the level
+  // beyond it (theory/theory_level.hpp). A kinetic scene's theory.tsv also holds the paper level's
+  // curves as `<column>_paper`.
+  std::string level = "paper";
   std::string msd = "eq17";        // eq17 | vacf | longtime | closed
   std::string moments = "auto";    // viscoelastic rates: auto | series | quadrature
   double rtol = 1e-11;             // CVODE relative tolerance
@@ -67,10 +71,12 @@ struct DsmcSettings {
 };
 
 // [compare]: which quantities are compared and with what tolerance (design.md §3–4). A point passes
-// when |dsmc − theory| <= max(relative |theory|, z · dsmc_err, absolute); `species` and `t_min` restrict a
-// tolerance to where it applies (e.g. a stated model error of the theory for one species).
+// when |dsmc − theory| <= relative |theory| + z · dsmc_err, or <= absolute: `relative` is the judged
+// theory's computed model error, z · dsmc_err the statistical part (the two add: a point can carry
+// both); `species` and `t_min` restrict a tolerance to where it applies.
 struct CompareQuantity {
   std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
+  std::string theory;           // the theory column that predicts the DSMC column `name` (default: name)
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "diffusion.hpp"
+#include "theory_level.hpp"
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
 #include "msd.hpp"
@@ -27,14 +28,40 @@ MomentMethod moment_method(const std::string& name) {
 // Settled quantities along a parameter: D_k/D_1 (v1 Eq. 19), the first-Sonine γ = T_1/T_2 with the
 // Maxwellian γ beside it, and the cumulants c_k (MG App. A). Species 0 rows carry γ; along n* also
 // γ(α, n*)/γ(α, 0) (MG Fig. 6).
-Table sweep_table(const model::Scene& s) {
+// Per-time values of every species, however they were computed.
+struct Sample {
+  double t_s = nan;
+  std::vector<double> T, msd, D_ratio, tamsd;
+};
+
+std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats);
+
+// The theory's prediction of what the DSMC measures along a sweep (dsmc.at): D_k/D_1 as the ratio of
+// MSD increments between the first and the last [time] sample, from the same settled start, computed
+// through the level's MSD in time (transients and the MSD offset included).
+std::vector<double> increment_ratios(const model::Scene& point, const TheoryLevel& level) {
+  model::Scene p = point;
+  p.initial.kind = model::InitialState::Kind::hcs;
+  p.observables = model::Observables{};
+  p.observables.msd = true;
+  SolverStats unused;
+  const std::vector<Sample> m = history_samples(p, scene_rates(p, p.mixture, p.restitution), level, unused);
+  std::vector<double> out;
+  for (std::size_t k = 0; k < p.mixture.size(); ++k)
+    out.push_back((m.back().msd[k] - m.front().msd[k]) / (m.back().msd[0] - m.front().msd[0]));
+  return out;
+}
+
+Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   const model::Sweep& sw = *s.theory.sweep;
   const auto& o = s.observables;
   const std::size_t N = s.mixture.size();
   const bool relative = o.gamma && sw.parameter == model::Sweep::Parameter::n_star;
   Table t;
   t.columns = {sw.column(), "species"};
+  const bool increments = o.d_ratio && s.dsmc.present && s.times.size() >= 2;
   if (o.d_ratio) t.columns.push_back("D_ratio");
+  if (increments) t.columns.push_back("D_ratio_increment");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
   if (relative) t.columns.push_back("gamma_ratio");
   if (o.cumulant) t.columns.push_back("c");
@@ -42,13 +69,19 @@ Table sweep_table(const model::Scene& s) {
   const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0), false).gamma() : nan;
   for (double x : sw.values) {
     const model::Scene p = model::sweep_point(s, x);
-    const SettledDiffusion d = o.d_ratio ? settled_diffusion(scene_rates(p, p.mixture, p.restitution)) : SettledDiffusion{};
+    SettledDiffusion d;
+    if (o.d_ratio) {
+      const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
+      d = level.diffusion_at(rates, level.settled_temperatures(rates));
+    }
+    const std::vector<double> inc = increments ? increment_ratios(p, level) : std::vector<double>{};
     SonineHcs sonine, maxwell;
     if (o.gamma || o.cumulant) sonine = sonine_of(p, false);
     if (o.gamma) maxwell = sonine_of(p, true);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
+      if (increments) row.push_back(k > 1 ? inc[k - 1] : nan);  // species 1: 1 by construction
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
       if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
@@ -79,12 +112,6 @@ Table distribution_table(const model::Scene& s) {
   }
   return t;
 }
-
-// Per-time values of every species, however they were computed.
-struct Sample {
-  double t_s = nan;
-  std::vector<double> T, msd, D_ratio, tamsd;
-};
 
 Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
   const auto& o = s.observables;
@@ -137,9 +164,9 @@ std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& 
   return out;
 }
 
-std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, SolverStats& stats) {
+std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats) {
   const auto& o = s.observables;
-  const MsdMethod method = parse_msd_method(s.theory.msd);
+  const MsdMethod method = level.msd_method(s);
   const std::vector<double> T0 = initial_temperatures(s.initial, rates);
   TemperatureOptions opt;
   opt.rtol = s.theory.rtol;
@@ -148,10 +175,11 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   opt.reduced_time = o.rescaled_time || (msd && method == MsdMethod::eq17);
   opt.diffusion_integral = msd && method == MsdMethod::longtime;
   opt.vacf = msd && method == MsdMethod::vacf;
+  level.configure(opt, rates);
   const TemperatureHistory h(rates, T0, s.times.back(), opt);
   stats = h.stats();
   const bool settled = o.tamsd || (msd && method == MsdMethod::closed);
-  const SettledDiffusion d0 = settled ? diffusion_at(rates, T0) : SettledDiffusion{};
+  const SettledDiffusion d0 = settled ? level.diffusion_at(rates, T0) : SettledDiffusion{};
   const std::size_t N = rates.size();
   std::vector<Sample> out;
   for (double t : s.times) {
@@ -170,8 +198,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
       }
       if (o.tamsd) x.tamsd.push_back(tamsd(d0.D[k], d0.tau_v[k], d0.tau0, o.tamsd_measurement_time, t));
     }
-    if (o.d_ratio)  // D_k(t)/D_1(t), v1 Eq. (19)
-      for (std::size_t k = 0; k < N; ++k) x.D_ratio.push_back(rates.diffusion(k, x.T.data()) / rates.diffusion(0, x.T.data()));
+    if (o.d_ratio) x.D_ratio = level.diffusion_at(rates, x.T).D_ratio;  // D_k(t)/D_1(t)
     out.push_back(std::move(x));
   }
   return out;
@@ -189,7 +216,7 @@ double scene_time_unit(const model::Scene& s) {
 void rescale_time_columns(model::Table& table, double factor) {
   for (std::size_t c = 0; c < table.columns.size(); ++c) {
     const std::string& name = table.columns[c];
-    if (name == "t" || name == "lag" || name == "t_s" || name == "t_s_err")
+    if (name == "t" || name == "lag" || name == "t_s" || name == "t_s_err" || name == "t_s_paper")
       for (auto& row : table.rows) row[c] *= factor;
   }
 }
@@ -203,6 +230,28 @@ CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, con
   return CollisionRates(mix, law, std::move(chi), moment_method(s.theory.moments));
 }
 
+namespace {
+
+// Every curve of a scene at one level, in natural time units.
+Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& stats) {
+  if (s.theory.sweep) return sweep_table(s, level);
+  if (s.observables.distribution_settled) return distribution_table(s);
+  const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
+  return time_table(s, s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, level, stats));
+}
+
+// Appends the value columns of `paper` (same rows) as `<column>_paper`.
+void append_paper_columns(Table& t, const Table& paper) {
+  for (std::size_t c = 1; c < paper.columns.size(); ++c) {
+    const std::string& name = paper.columns[c];
+    if (name == "species" || name == "lag" || name.ends_with("_maxwell")) continue;
+    t.columns.push_back(name + "_paper");
+    for (std::size_t r = 0; r < t.rows.size(); ++r) t.rows[r].push_back(paper.rows[r][c]);
+  }
+}
+
+}  // namespace
+
 TheoryResult run_theory(const model::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;
@@ -212,14 +261,11 @@ TheoryResult run_theory(const model::Scene& scene) {
   for (double& t : scaled.times) t *= unit;
   scaled.observables.tamsd_measurement_time *= unit;
   const model::Scene& s = scaled;
-  if (s.theory.sweep) {
-    r.table = sweep_table(s);
-  } else if (s.observables.distribution_settled) {
-    r.table = distribution_table(s);
-  } else {
-    const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
-    const std::vector<Sample> samples = s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, r.stats);
-    r.table = time_table(s, samples);
+  const auto level = make_theory_level(s.theory.level);
+  r.table = level_table(s, *level, r.stats);
+  if (s.theory.level != "paper") {  // the papers' curves beside the judged level's
+    SolverStats paper_stats;
+    append_paper_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats));
   }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,0 +1,38 @@
+#pragma once
+// A theory level: how the kinetic equations are closed (issue 12; physics-beyond.md). A scene
+// chooses one with `[theory] level`; every curve of theory.tsv is computed through it.
+//   paper    the papers' closure: Maxwellian cooling rates (v1 A2), the scene's MSD form (v1 Eq. 17 by
+//            default), D_k = T_k τ_v,k/m_k (v1 Eq. 19 = the first-Sonine D, physics-beyond §1).
+//   kinetic  the exact first-Sonine MSD (the velocity-autocorrelation ODE, the tagged velocity decaying
+//            at ν_k; physics-beyond §2) with the level's diffusion coefficient and cooling rates.
+// A level is a type, chosen once per scene: the code that computes curves never asks which it is.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "collision_rates.hpp"
+#include "diffusion.hpp"
+#include "model/scene.hpp"
+#include "msd.hpp"
+#include "temperature_history.hpp"
+
+namespace granmix::theory {
+
+class TheoryLevel {
+ public:
+  virtual ~TheoryLevel() = default;
+  virtual const char* name() const = 0;
+  // How the MSD is computed in time (the paper level follows the scene's `msd`).
+  virtual MsdMethod msd_method(const model::Scene& s) const = 0;
+  // The level's cooling and velocity-decay models for the temperature integrator.
+  virtual void configure(TemperatureOptions& opt, const CollisionRates& rates) const = 0;
+  // D_k, the MSD's velocity memory τ_v,k and τ₀ at the temperatures T (no settling).
+  virtual SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const = 0;
+  // The level's settled temperatures (⟨T⟩ = 1).
+  virtual std::vector<double> settled_temperatures(const CollisionRates& rates) const = 0;
+};
+
+// "paper" or "kinetic" (scene.theory.level); throws std::invalid_argument otherwise.
+std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name);
+
+}  // namespace granmix::theory
