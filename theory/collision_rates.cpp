@@ -40,20 +40,15 @@ CollisionMoments CollisionRates::moments(std::size_t k, std::size_t i, double V)
   return method_ == MomentMethod::series ? series_moments(a) : quadrature_moments(a, law_.form());
 }
 
-CollisionRates::Terms CollisionRates::pair_terms(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  const Pair& p = pair(k, i);
-  const double V = Tk * p.inv_mk + Ti * p.inv_mi;
-  return {std::sqrt(V) * p.mu, p.mu_k * (Ti - Tk) / Tk, moments(k, i, V)};
-}
-
 double CollisionRates::xi(std::size_t k, std::size_t i, double Tk, double Ti) const {
   const Pair& p = pair(k, i);
   return xi_formula(p, std::sqrt(Tk * p.inv_mk + Ti * p.inv_mi), Tk, Ti, moments(k, i, Tk * p.inv_mk + Ti * p.inv_mi));
 }
 
 double CollisionRates::inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  const Terms t = pair_terms(k, i, Tk, Ti);
-  return pair(k, i).prefactor * t.sqrtV_mu * (1.0 + t.X_minus_1) * t.W.W2 * 0.5;
+  const Pair& p = pair(k, i);
+  const double V = Tk * p.inv_mk + Ti * p.inv_mi;
+  return inv_tau_formula(p, std::sqrt(V), Tk, Ti, moments(k, i, V));
 }
 
 double CollisionRates::xi_species(std::size_t k, const double* T) const {
@@ -68,31 +63,36 @@ double CollisionRates::inv_tau_v_species(std::size_t k, const double* T) const {
   return sum;
 }
 
-void CollisionRates::xi_all(const double* T, double* out) const {
+template <class F>
+void CollisionRates::symmetric_sum(const double* T, double* out, F f) const {
   const std::size_t N = mix_.size();
-  if (law_.is_viscoelastic()) {
-    for (std::size_t k = 0; k < N; ++k) out[k] = xi_species(k, T);
-    return;
-  }
-  // Constant law, the hot path of the temperature ODE with hundreds of species: each unordered pair
-  // once, √V shared by ξ_ki and ξ_ik (V is symmetric), moments precomputed. Same formula as xi().
   for (std::size_t k = 0; k < N; ++k) out[k] = 0.0;
   for (std::size_t k = 0; k < N; ++k) {
     const double Tk = T[k];
     for (std::size_t i = k; i < N; ++i) {
       const Pair& a = pairs_[k * N + i];
       const double Ti = T[i], sqrtV = std::sqrt(Tk * a.inv_mk + Ti * a.inv_mi);
-      out[k] += xi_formula(a, sqrtV, Tk, Ti, a.W);
+      out[k] += f(a, sqrtV, Tk, Ti, a.W);
       if (i != k) {
         const Pair& b = pairs_[i * N + k];
-        out[i] += xi_formula(b, sqrtV, Ti, Tk, b.W);
+        out[i] += f(b, sqrtV, Ti, Tk, b.W);
       }
     }
   }
 }
 
+void CollisionRates::xi_all(const double* T, double* out) const {
+  if (law_.is_viscoelastic())
+    for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = xi_species(k, T);
+  else
+    symmetric_sum(T, out, xi_formula);
+}
+
 void CollisionRates::inv_tau_v_all(const double* T, double* out) const {
-  for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = inv_tau_v_species(k, T);
+  if (law_.is_viscoelastic())
+    for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = inv_tau_v_species(k, T);
+  else
+    symmetric_sum(T, out, inv_tau_formula);
 }
 
 double CollisionRates::diffusion(std::size_t k, const double* T) const {

@@ -33,6 +33,7 @@ class CollisionRates {
   const model::Restitution& law() const { return law_; }
   std::size_t size() const { return mix_.size(); }
   double chi(std::size_t k, std::size_t i) const { return chi_[k][i]; }
+  const std::vector<std::vector<double>>& contact_values() const { return chi_; }
 
   CollisionMoments moments(std::size_t k, std::size_t i, double V) const;
   double xi(std::size_t k, std::size_t i, double Tk, double Ti) const;         // ξ_ki
@@ -56,16 +57,18 @@ class CollisionRates {
     CollisionMoments W;  // constant law: the pair's moments, computed once
   };
   const Pair& pair(std::size_t k, std::size_t i) const { return pairs_[k * mix_.size() + i]; }
-  // Shared by ξ and τ: √V μ, X − 1 and the moments.
-  struct Terms {
-    double sqrtV_mu, X_minus_1;
-    CollisionMoments W;
-  };
-  Terms pair_terms(std::size_t k, std::size_t i, double Tk, double Ti) const;
   // ξ_ki from its parts (the formula at the top of this file); shared by xi() and xi_all().
   static double xi_formula(const Pair& p, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
     return p.prefactor * sqrtV * p.mu * (W.D - p.mu_k * (Ti - Tk) / Tk * W.W2);
   }
+  // τ_v,ki⁻¹ likewise; shared by inv_tau_v() and inv_tau_v_all().
+  static double inv_tau_formula(const Pair& p, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
+    return p.prefactor * (sqrtV * p.mu) * (1.0 + p.mu_k * (Ti - Tk) / Tk) * W.W2 * 0.5;
+  }
+  // Σ_i f(pair k i) for all k, each unordered pair once with √V shared (constant law: the hot path
+  // of the temperature ODE with hundreds of species); summation order per k as in the plain loop.
+  template <class F>
+  void symmetric_sum(const double* T, double* out, F f) const;
 
   model::Mixture mix_;
   model::Restitution law_;

@@ -3,7 +3,6 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_multiroots.h>
 
-#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -14,7 +13,7 @@
 #include "model/errors.hpp"
 #include "model/gsl_setup.hpp"
 #include "settled_ratios.hpp"
-#include "sonine_terms.hpp"
+#include "sonine_system.hpp"
 
 namespace granmix::theory {
 
@@ -28,6 +27,7 @@ struct Problem {
   std::size_t N;
   double sref2;  // σ_ref² = σ_12² (σ_11² for one species)
   double m1, m2;
+  SonineSystem system;
 };
 
 // Everything at given temperatures T_k (Σ x_k T_k = 1): λ, c, cooling rates ζ_k.
@@ -35,43 +35,16 @@ struct Evaluation {
   std::vector<double> lambda, c, zeta;
 };
 
-Evaluation evaluate(const Problem& p, const std::vector<double>& T) {
+Evaluation evaluate(Problem& p, const std::vector<double>& T) {
   const std::size_t N = p.N;
   Evaluation e;
   const double v0sq = 2.0 * (p.m1 + p.m2) / (p.m1 * p.m2);  // T = 1
   for (std::size_t k = 0; k < N; ++k) e.lambda.push_back(p.mix[k].mass * v0sq / (2.0 * T[k]));
-  // Row i of the linear system: B_ii c_i + Σ_j D_ij c_j = A_i (MG Eqs. 33–38); ζ_i = z0_i + Σ_j Z_ij c_j.
-  Eigen::MatrixXd K(N, N), Z(N, N);
-  Eigen::VectorXd A(N), z0(N);
-  for (std::size_t i = 0; i < N; ++i) {
-    const double s_ii = std::pow(p.mix[i].diameter, 2) / p.sref2;
-    SonineMoments own = sonine_self(p.mix.fraction(i), p.chi[i][i], s_ii, p.alpha.eps(i, i), e.lambda[i]);
-    std::vector<SonineMoments> partner(N);
-    for (std::size_t j = 0; j < N; ++j) {
-      if (j == i) continue;
-      const double s_ij = std::pow(p.mix.sigma(i, j), 2) / p.sref2;
-      const double mu_ji = p.mix[j].mass / (p.mix[i].mass + p.mix[j].mass);
-      partner[j] = sonine_cross(p.mix.fraction(j), p.chi[i][j], s_ij, p.alpha.eps(i, j), mu_ji, e.lambda[i], e.lambda[j]);
-      own.zeta0 += partner[j].zeta0, own.zeta_self += partner[j].zeta_self;
-      own.Lambda0 += partner[j].Lambda0, own.Lambda_self += partner[j].Lambda_self;
-    }
-    const double f = 15.0 / (2.0 * e.lambda[i] * e.lambda[i]);
-    A[i] = -f * own.zeta0 - own.Lambda0;                               // MG (33), (36)
-    K(i, i) = f * (own.zeta_self + 0.5 * own.zeta0) + own.Lambda_self;  // MG (34), (38)
-    z0[i] = own.zeta0;
-    Z(i, i) = own.zeta_self;
-    for (std::size_t j = 0; j < N; ++j)
-      if (j != i) K(i, j) = f * partner[j].zeta_cross + partner[j].Lambda_cross, Z(i, j) = partner[j].zeta_cross;  // (35), (37)
-  }
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(N);
-  if (!p.maxwell) {
-    const Eigen::FullPivLU<Eigen::MatrixXd> lu(K);
-    if (!lu.isInvertible()) throw NumericalError("Sonine: the linear system for the cumulants is singular");
-    c = lu.solve(A);
-  }
-  const Eigen::VectorXd zeta = z0 + Z * c;  // MG Eq. (45) sides
-  e.c.assign(c.data(), c.data() + N);
-  e.zeta.assign(zeta.data(), zeta.data() + N);
+  p.system.assemble(e.lambda.data());
+  e.c.assign(N, 0.0);
+  if (!p.maxwell) p.system.solve_cumulants(e.c.data());
+  e.zeta.resize(N);
+  p.system.cooling(e.c.data(), e.zeta.data());  // MG Eq. (45) sides
   return e;
 }
 
@@ -86,7 +59,7 @@ std::vector<double> temperatures(const Problem& p, const double* x) {
 
 double relative_difference(double a, double b) { return (a - b) / (std::abs(a) + std::abs(b) + 1e-300); }
 
-std::vector<double> solve_binary(const Problem& p) {
+std::vector<double> solve_binary(Problem& p) {
   auto f = [&](double x) {
     const double xs[2] = {x, 0.0};  // x = ln γ = ln(T_1/T_2)
     const Evaluation e = evaluate(p, temperatures(p, xs));
@@ -97,7 +70,7 @@ std::vector<double> solve_binary(const Problem& p) {
   return temperatures(p, xs);
 }
 
-std::vector<double> solve_many(const Problem& p) {
+std::vector<double> solve_many(Problem& p) {
   model::use_gsl_return_codes();
   // Start: the Maxwellian ratios of v1 Eq. (A2), which equal MG's c = 0 level (physics.md §6).
   const CollisionRates rates(p.mix, p.alpha, p.chi);
@@ -106,14 +79,14 @@ std::vector<double> solve_many(const Problem& p) {
   gsl_vector* x = gsl_vector_alloc(n);
   for (std::size_t k = 0; k < n; ++k) gsl_vector_set(x, k, std::log(start[k + 1]));
   auto residual = [](const gsl_vector* xv, void* params, gsl_vector* out) -> int {
-    const auto& pr = *static_cast<const Problem*>(params);
+    auto& pr = *static_cast<Problem*>(params);
     std::vector<double> xs(pr.N, 0.0);
     for (std::size_t k = 1; k < pr.N; ++k) xs[k] = gsl_vector_get(xv, k - 1);
     const Evaluation e = evaluate(pr, temperatures(pr, xs.data()));
     for (std::size_t k = 1; k < pr.N; ++k) gsl_vector_set(out, k - 1, relative_difference(e.zeta[k], e.zeta[0]));
     return GSL_SUCCESS;
   };
-  gsl_multiroot_function F{residual, n, const_cast<Problem*>(&p)};
+  gsl_multiroot_function F{residual, n, &p};
   gsl_multiroot_fsolver* s = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
   if (s == nullptr || x == nullptr) throw NumericalError("gsl_multiroot_fsolver_alloc failed");
   int status = gsl_multiroot_fsolver_set(s, &F, x);
@@ -141,7 +114,8 @@ SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha,
                      bool maxwell, SonineSolver solver) {
   if (alpha.is_viscoelastic()) throw std::invalid_argument("Sonine HCS: needs constant restitution coefficients");
   const std::size_t N = mix.size();
-  const Problem p{mix, alpha, chi, maxwell, N, std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2), mix[0].mass, mix[N > 1 ? 1 : 0].mass};
+  const double sref2 = std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2);
+  Problem p{mix, alpha, chi, maxwell, N, sref2, mix[0].mass, mix[N > 1 ? 1 : 0].mass, SonineSystem(mix, alpha, chi, sref2)};
   SonineHcs out;
   if (N == 1)
     out.T = {1.0};

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <exception>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -22,17 +23,23 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   for (double T : T0_)
     if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("temperatures: initial T_k must be positive");
   if (!(t_end > 0.0) || !std::isfinite(t_end)) throw std::invalid_argument("temperatures: end time must be positive");
+  cooling_ = opt_.cooling ? opt_.cooling : std::make_shared<MaxwellCooling>(rates_);
+  decay_ = opt_.decay ? opt_.decay : std::make_shared<MaxwellDecay>(rates_);
   n_ = N_;
+  nz_ = cooling_->state_size();
+  z_at_ = n_, n_ += nz_;
   if (opt_.reduced_time) tau_at_ = n_, n_ += N_;
   if (opt_.diffusion_integral) int_at_ = n_, n_ += N_;
   if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += 2 * N_;
   work_T_.resize(N_);
   work_a_.resize(N_);
   work_xi_.resize(N_);
+  work_nu_.resize(N_);
 
   // Clock (see the header): Haff time of the mean cooling rate, or the fastest relaxation time.
-  std::vector<double> xi(N_), itau(N_);
-  rates_.xi_all(T0_.data(), xi.data());
+  std::vector<double> xi(N_), itau(N_), z0(nz_), z_atol(nz_), dz(nz_);
+  cooling_->initial_state(T0_.data(), opt_.rtol, z0.data(), z_atol.data());
+  cooling_->rates(T0_.data(), z0.data(), xi.data(), dz.data());
   rates_.inv_tau_v_all(T0_.data(), itau.data());
   double fastest = 0.0, loss = 0.0, energy = 0.0;
   for (std::size_t k = 0; k < N_; ++k) {
@@ -63,6 +70,7 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
     if (opt_.diffusion_integral) atol[int_at_ + k] = opt_.rtol * t1 * rates_.diffusion(k, T0_.data());
     if (opt_.vacf) atol[r2_at_ + k] = opt_.rtol * v * t1 * t1, atol[j_at_ + k] = opt_.rtol * v * t1;
   }
+  for (std::size_t j = 0; j < nz_; ++j) y[z_at_ + j] = z0[j], atol[z_at_ + j] = z_atol[j];
   y0_.assign(y, y + n_);
   cv.init(0.0, opt_.rtol, atol.data());
   const double s_end = to_s(t_end_);
@@ -75,8 +83,9 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   double s = 0.0;
   try {
     while (s < s_end) {
-      model::check_cvode(CVode(cv.mem(), s_end, cv.y(), &s, CV_ONE_STEP), "CVode",
-                         "temperature ODE at t = " + std::to_string(to_t(s)));
+      const int flag = CVode(cv.mem(), s_end, cv.y(), &s, CV_ONE_STEP);
+      if (rhs_error_) std::rethrow_exception(rhs_error_);
+      model::check_cvode(flag, "CVode", "temperature ODE at t = " + std::to_string(to_t(s)));
       int q = 0;
       model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
       Step st{s, q, taylor_.size()};
@@ -109,8 +118,15 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
 
 int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr) {
   auto& self = *static_cast<TemperatureHistory*>(self_ptr);
-  const double* y = N_VGetArrayPointer(yv);
-  double* dy = N_VGetArrayPointer(dyv);
+  try {
+    return derivatives(self, s, N_VGetArrayPointer(yv), N_VGetArrayPointer(dyv));
+  } catch (...) {  // e.g. a singular Sonine system: rethrown by the constructor, never across CVODE's C frames
+    self.rhs_error_ = std::current_exception();
+    return -1;
+  }
+}
+
+int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const double* y, double* dy) {
   const std::size_t N = self.N_;
   const double dt_ds = self.dt_ds(s);
   double* T = self.work_T_.data();
@@ -118,23 +134,26 @@ int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr)
   for (std::size_t k = 0; k < N; ++k)
     if (!std::isfinite(T[k]) || T[k] <= 0.0) return 1;  // recoverable: CVODE retries with a smaller step
   double* xi = self.work_xi_.data();
-  self.rates_.xi_all(T, xi);
+  self.cooling_->rates(T, y + self.z_at_, xi, dy + self.z_at_);
   for (std::size_t k = 0; k < N; ++k) dy[k] = -xi[k] * dt_ds;  // d ln T_k/ds = −ξ_k dt/ds (v1 Eq. 22)
+  for (std::size_t j = 0; j < self.nz_; ++j) dy[self.z_at_ + j] *= dt_ds;
   if (self.opt_.reduced_time)
     for (std::size_t k = 0; k < N; ++k) dy[self.tau_at_ + k] = std::sqrt(T[k] / self.T0_[k]) * dt_ds;
-  if (self.opt_.diffusion_integral || self.opt_.vacf) {
+  if (self.opt_.diffusion_integral) {
     double* itau = self.work_a_.data();
     self.rates_.inv_tau_v_all(T, itau);
+    for (std::size_t k = 0; k < N; ++k)
+      dy[self.int_at_ + k] = T[k] / (itau[k] * self.rates_.mixture()[k].mass) * dt_ds;  // D_k, v1 Eq. (19)
+  }
+  if (self.opt_.vacf) {
+    // A tagged velocity decays at ν_k (default τ_v⁻¹ + ξ_k/2, physics.md §3: (A1) is that rate minus
+    // ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant.
+    double* nu = self.work_nu_.data();
+    self.decay_->rates(T, xi, nu);
     for (std::size_t k = 0; k < N; ++k) {
-      const double m = self.rates_.mixture()[k].mass;
-      if (self.opt_.diffusion_integral) dy[self.int_at_ + k] = T[k] / (itau[k] * m) * dt_ds;  // D_k, v1 Eq. (19)
-      if (self.opt_.vacf) {
-        const double J = y[self.j_at_ + k];
-        dy[self.r2_at_ + k] = 2.0 * J * dt_ds;
-        // A tagged velocity decays at the momentum-relaxation rate τ_v⁻¹ + ξ_k/2 (physics.md §3:
-        // (A1) is that rate minus ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant.
-        dy[self.j_at_ + k] = (3.0 * T[k] / m - J * (itau[k] + 0.5 * xi[k])) * dt_ds;
-      }
+      const double J = y[self.j_at_ + k];
+      dy[self.r2_at_ + k] = 2.0 * J * dt_ds;
+      dy[self.j_at_ + k] = (3.0 * T[k] / self.rates_.mixture()[k].mass - J * nu[k]) * dt_ds;
     }
   }
   return 0;
@@ -173,6 +192,15 @@ double TemperatureHistory::diffusion_integral(double t, std::size_t k) const {
 double TemperatureHistory::msd_vacf(double t, std::size_t k) const {
   if (!opt_.vacf) throw std::logic_error("temperature history: the VACF ODE was not integrated");
   return component(t, r2_at_ + k);
+}
+
+double TemperatureHistory::state(double t, std::size_t j) const {
+  if (j >= nz_) throw std::out_of_range("temperature history: the cooling model has " + std::to_string(nz_) + " extra unknowns");
+  return component(t, z_at_ + j);
+}
+
+void TemperatureHistory::states(double t, double* z) const {
+  for (std::size_t j = 0; j < nz_; ++j) z[j] = component(t, z_at_ + j);
 }
 
 }  // namespace granmix::theory

@@ -8,17 +8,23 @@
 // Optional companions integrated with the same solver (only when asked for):
 //   reduced time       τ_k(t) = ∫₀ᵗ √(T_k/T_k(0)) dt'          (v1 Eq. 17, Fig. 1 t_s)
 //   diffusion integral I_k(t) = ∫₀ᵗ D_k dt'                     (v1 Eq. 21, long-time MSD = 6 I_k)
-//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − J (τ_v,k⁻¹ + ξ_k/2)  (physics.md §3, corrected:
-//                      the tagged velocity decays at the momentum-relaxation rate, not at τ_v,k⁻¹)
+//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − ν_k J  (physics-beyond.md §2; J = ⟨Δr·v⟩)
+// The cooling rates ξ_k and the velocity decay rate ν_k are pluggable (cooling_model.hpp); by
+// default ξ_k of v1 (A2) and ν_k = τ_v,k⁻¹ + ξ_k/2 (physics.md §3: the tagged velocity decays at the
+// momentum-relaxation rate, not at τ_v,k⁻¹). A cooling model may bring extra unknowns (the relaxing
+// Sonine cumulants), integrated beside ln T_k and read back with state().
 // The whole solution is kept as CVODE's own interpolating polynomials (Nordsieck data of every
 // step), so any time up to t_end is available at solver accuracy.
 #include <cmath>
 #include <cstddef>
+#include <exception>
+#include <memory>
 #include <vector>
 
 #include <sundials/sundials_nvector.h>
 
 #include "collision_rates.hpp"
+#include "cooling_model.hpp"
 
 namespace granmix::theory {
 
@@ -31,6 +37,9 @@ struct TemperatureOptions {
   // Earliest time at which the companions must be accurate (0: 1e-8 of the clock's time unit).
   // Their absolute tolerances are rtol times their size there; see temperature_history.cpp.
   double t_first = 0.0;
+  // Closures (cooling_model.hpp); null: MaxwellCooling and MaxwellDecay of the rates (the paper level).
+  std::shared_ptr<const CoolingModel> cooling;
+  std::shared_ptr<const VelocityDecay> decay;
 };
 
 struct SolverStats {
@@ -54,6 +63,10 @@ class TemperatureHistory {
   double reduced_time(double t, std::size_t k) const;
   double diffusion_integral(double t, std::size_t k) const;
   double msd_vacf(double t, std::size_t k) const;
+  // Extra unknown j of the cooling model (e.g. the cumulant c_k of SonineCooling's relaxing mode).
+  double state(double t, std::size_t j) const;
+  void states(double t, double* z) const;  // all cooling_model().state_size() of them
+  const CoolingModel& cooling_model() const { return *cooling_; }
 
   // The solver's time variable (see above) and its derivative.
   double to_s(double t) const { return log_clock_ ? std::log1p(t / t_c_) : t / t_c_; }
@@ -68,6 +81,7 @@ class TemperatureHistory {
   };
   double component(double t, std::size_t index) const;
   static int rhs(double s, N_Vector y, N_Vector dy, void* self);
+  static int derivatives(TemperatureHistory& self, double s, const double* y, double* dy);
 
   const CollisionRates& rates_;
   std::vector<double> T0_;
@@ -75,12 +89,15 @@ class TemperatureHistory {
   bool log_clock_ = true;
   TemperatureOptions opt_;
   std::size_t N_, n_;
-  std::size_t tau_at_ = 0, int_at_ = 0, r2_at_ = 0, j_at_ = 0;
+  std::shared_ptr<const CoolingModel> cooling_;
+  std::shared_ptr<const VelocityDecay> decay_;
+  std::size_t z_at_ = 0, nz_ = 0, tau_at_ = 0, int_at_ = 0, r2_at_ = 0, j_at_ = 0;
   std::vector<Step> steps_;
   std::vector<double> taylor_;
   std::vector<double> y0_;
   SolverStats stats_;
-  mutable std::vector<double> work_T_, work_a_, work_xi_;
+  std::exception_ptr rhs_error_;
+  mutable std::vector<double> work_T_, work_a_, work_xi_, work_nu_;
 };
 
 }  // namespace granmix::theory

@@ -1,0 +1,57 @@
+#pragma once
+// The two closures of the temperature ODE, pluggable (physics-beyond.md §1, §4):
+//   CoolingModel   partial cooling rates ξ_k in dT_k/dt = −ξ_k T_k, possibly with extra unknowns z
+//                  integrated beside ln T_k (the relaxing Sonine cumulants, sonine_cooling.hpp);
+//   VelocityDecay  the decay rate ν_k of a tagged particle's velocity correlation in the VACF ODE
+//                  dQ_k/dt = 3T_k/m_k − ν_k Q_k (physics-beyond.md §2).
+// The defaults are the paper level: Maxwellian ξ_k (v1 A2) and ν_k = τ_v,k⁻¹ + ξ_k/2, the first-Sonine
+// momentum-transfer rate (physics-beyond.md §1 identity). Implementations may keep scratch arrays
+// (no allocation per call), so one model object serves one integration at a time.
+#include <cstddef>
+
+#include "collision_rates.hpp"
+
+namespace granmix::theory {
+
+class CoolingModel {
+ public:
+  virtual ~CoolingModel() = default;
+  // Number of extra unknowns z integrated with the temperatures (0 for a closed model).
+  virtual std::size_t state_size() const { return 0; }
+  // z at t = 0 and its absolute tolerances, given the initial temperatures and the relative tolerance.
+  virtual void initial_state(const double* /*T0*/, double /*rtol*/, double* /*z*/, double* /*atol*/) const {}
+  // ξ_k at temperatures T (and z), and dz/dt (state_size() values; untouched when 0).
+  virtual void rates(const double* T, const double* z, double* xi, double* dz_dt) const = 0;
+};
+
+class VelocityDecay {
+ public:
+  virtual ~VelocityDecay() = default;
+  // ν_k at temperatures T, given the cooling rates ξ_k of the same state.
+  virtual void rates(const double* T, const double* xi, double* nu) const = 0;
+};
+
+// v1 Eq. (A2) (= Garzó–Dufty at a₂ = 0), CollisionRates::xi_all.
+class MaxwellCooling final : public CoolingModel {
+ public:
+  explicit MaxwellCooling(const CollisionRates& rates) : rates_(rates) {}
+  void rates(const double* T, const double*, double* xi, double*) const override { rates_.xi_all(T, xi); }
+
+ private:
+  const CollisionRates& rates_;
+};
+
+// ν_k = τ_v,k⁻¹ + ξ_k/2 with v1's τ_v,k⁻¹ (A1): the first-Sonine momentum-transfer rate.
+class MaxwellDecay final : public VelocityDecay {
+ public:
+  explicit MaxwellDecay(const CollisionRates& rates) : rates_(rates) {}
+  void rates(const double* T, const double* xi, double* nu) const override {
+    rates_.inv_tau_v_all(T, nu);
+    for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = nu[k] + 0.5 * xi[k];
+  }
+
+ private:
+  const CollisionRates& rates_;
+};
+
+}  // namespace granmix::theory

@@ -1,0 +1,54 @@
+#include "sonine_cooling.hpp"
+
+#include <stdexcept>
+
+namespace granmix::theory {
+
+SonineCooling::SonineCooling(const CollisionRates& rates, CumulantMode mode, std::vector<double> c0)
+    : rates_(rates),
+      mode_(mode),
+      c0_(std::move(c0)),
+      N_(rates.size()),
+      n_(rates.mixture().total_density()),
+      system_(rates.mixture(), rates.law(), rates.contact_values(), 1.0),
+      lambda_(N_),
+      c_(N_),
+      r_(N_) {
+  if (rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine cooling rates: need constant restitution coefficients");
+  if (c0_.empty()) c0_.assign(N_, 0.0);
+  if (c0_.size() != N_) throw std::invalid_argument("Sonine cooling rates: one initial cumulant per species needed");
+}
+
+void SonineCooling::assemble(const double* T) const {
+  for (std::size_t k = 0; k < N_; ++k) lambda_[k] = rates_.mixture()[k].mass / (2.0 * T[k]);  // v0 = 1
+  system_.assemble(lambda_.data());
+}
+
+void SonineCooling::initial_state(const double*, double rtol, double* z, double* atol) const {
+  // c is O(0.01–0.3) and starts at 0: an absolute tolerance rtol, as for ln T.
+  for (std::size_t k = 0; k < state_size(); ++k) z[k] = c0_[k], atol[k] = rtol;
+}
+
+void SonineCooling::rates(const double* T, const double* z, double* xi, double* dz_dt) const {
+  assemble(T);
+  if (mode_ == CumulantMode::quasi_static) {
+    system_.solve_cumulants(c_.data());
+    system_.cooling(c_.data(), xi);
+  } else {
+    system_.cooling(z, xi);
+    system_.moment_residual(z, r_.data());
+    for (std::size_t k = 0; k < N_; ++k) dz_dt[k] = n_ * (8.0 / 15.0) * lambda_[k] * lambda_[k] * r_[k];
+  }
+  for (std::size_t k = 0; k < N_; ++k) xi[k] *= n_;
+}
+
+void SonineCooling::cumulants(const double* T, const double* z, double* c) const {
+  if (mode_ == CumulantMode::relaxing) {
+    for (std::size_t k = 0; k < N_; ++k) c[k] = z[k];
+    return;
+  }
+  assemble(T);
+  system_.solve_cumulants(c);
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,50 @@
+#pragma once
+// The Garzó–Dufty first-Sonine equations of an N-species mixture at given temperatures (MG Sec. 2,
+// Eqs. 31–45, Appendix A: the pair terms of sonine_terms.hpp summed over partners), in MG's reduced
+// units with the reference scales left to the caller: λ_k = m_k v0²/(2T_k), s_ij = (σ_ij/σ_ref)²,
+// rates in units of ν_ref = n σ_ref² v0 (n the total density). With c_k = 2a₂,k (physics.md §6):
+//   cooling rates   ζ_i/ν_ref = z0_i + Σ_j Z_ij c_j                               (MG Eqs. 39–41)
+//   fourth moment   dc_i/dt  = ν_ref (8λ_i²/15) (Σ_j K_ij c_j − A_i)              (MG Eqs. 31–38)
+// The second line is the balance of ⟨V⁴⟩_i = 15(T_i/m_i)²(1 + c_i/2) under dT_i/dt = −ζ_i T_i and
+// collisions, linear in c as MG's: MG's row i is (15/(2λ_i²)) ζ_i(1 + c_i/2) + Λ_i = 0, the
+// stationary cumulant. So K c = A gives the cumulants that are steady at the current temperatures
+// (sonine_hcs.hpp solves it at the HCS ratios), and the same K, A drive the relaxing cumulants of
+// sonine_cooling.hpp, whose fixed point is therefore the same.
+#include <Eigen/Dense>
+#include <cstddef>
+#include <vector>
+
+#include "model/mixture.hpp"
+#include "model/restitution.hpp"
+
+namespace granmix::theory {
+
+class SonineSystem {
+ public:
+  // α = restitution matrix (constant law only); χ = contact values; σ_ref² in the units of the
+  // diameters. The arguments are referenced, not copied: they must outlive the system.
+  SonineSystem(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
+               double sref2);
+
+  std::size_t size() const { return N_; }
+  // Fill K, A, z0, Z at the given λ_k (no allocation).
+  void assemble(const double* lambda);
+  // c from K c = A (full-pivot LU); throws NumericalError if K is singular.
+  void solve_cumulants(double* c);
+  // ζ_i/ν_ref = z0_i + Σ_j Z_ij c_j.
+  void cooling(const double* c, double* zeta) const;
+  // (K c − A)_i: zero at the steady cumulants.
+  void moment_residual(const double* c, double* r) const;
+
+ private:
+  const model::Mixture& mix_;
+  const model::Restitution& alpha_;
+  const std::vector<std::vector<double>>& chi_;
+  double sref2_;
+  std::size_t N_;
+  Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
+  Eigen::VectorXd A_, z0_, c_;
+  Eigen::FullPivLU<Eigen::MatrixXd> lu_;
+};
+
+}  // namespace granmix::theory
