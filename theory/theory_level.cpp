@@ -1,8 +1,11 @@
 #include "theory_level.hpp"
 
+#include <limits>
 #include <stdexcept>
 
 #include "settled_ratios.hpp"
+#include "sonine_cooling.hpp"
+#include "sonine_hcs.hpp"
 
 namespace granmix::theory {
 
@@ -20,16 +23,31 @@ class PaperLevel final : public TheoryLevel {
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return theory::settled_temperatures(rates).T; }
 };
 
-// The exact first-Sonine MSD: the VACF ODE (physics-beyond §2), transients included.
+// The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
+// cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
+// ODE, the tagged velocity decaying at the momentum-transfer rate ν_k (the exact first-Sonine MSD,
+// transients included); settled states from the first-Sonine HCS. Viscoelastic laws keep the
+// Maxwellian cooling (MG's Sonine terms are for constant restitution).
 class KineticLevel final : public TheoryLevel {
  public:
   const char* name() const override { return "kinetic"; }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
-  void configure(TemperatureOptions&, const CollisionRates&) const override {}
-  SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
-    return theory::diffusion_at(rates, std::move(T));
+  void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
+    if (!rates.law().is_viscoelastic()) opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
   }
-  std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return theory::settled_temperatures(rates).T; }
+  SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
+    SettledDiffusion d = theory::diffusion_at(rates, T);
+    if (rates.law().is_viscoelastic()) return d;
+    // τ₀ = 2/ξ with the first-Sonine rate at the steady cumulants of these temperatures.
+    std::vector<double> xi(T.size());
+    SonineCooling(rates, CumulantMode::quasi_static).rates(T.data(), nullptr, xi.data(), nullptr);
+    d.tau0 = xi[0] > 0.0 ? 2.0 / xi[0] : std::numeric_limits<double>::infinity();
+    return d;
+  }
+  std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
+    if (rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
+    return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
+  }
 };
 
 }  // namespace
