@@ -27,17 +27,26 @@ class PaperLevel final : public TheoryLevel {
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
 // ODE, the tagged velocity decaying at the momentum-transfer rate ν_k (the exact first-Sonine MSD,
 // transients included); settled states from the first-Sonine HCS. Viscoelastic laws keep the
-// Maxwellian cooling (MG's Sonine terms are for constant restitution).
+// Maxwellian cooling (MG's Sonine terms are for constant restitution), and so does an elastic gas,
+// whose settled state is the Maxwellian equilibrium (the cumulant equations are singular there).
+bool sonine_applies(const CollisionRates& rates) {
+  if (rates.law().is_viscoelastic()) return false;
+  for (std::size_t k = 0; k < rates.size(); ++k)
+    for (std::size_t i = k; i < rates.size(); ++i)
+      if (rates.law().eps(k, i) < 1.0) return true;
+  return false;
+}
+
 class KineticLevel final : public TheoryLevel {
  public:
   const char* name() const override { return "kinetic"; }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
-    if (!rates.law().is_viscoelastic()) opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
+    if (sonine_applies(rates)) opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
-    if (rates.law().is_viscoelastic()) return d;
+    if (!sonine_applies(rates)) return d;
     // τ₀ = 2/ξ with the first-Sonine rate at the steady cumulants of these temperatures.
     std::vector<double> xi(T.size());
     SonineCooling(rates, CumulantMode::quasi_static).rates(T.data(), nullptr, xi.data(), nullptr);
@@ -45,7 +54,7 @@ class KineticLevel final : public TheoryLevel {
     return d;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
-    if (rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
+    if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
   }
 };
