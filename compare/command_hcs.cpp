@@ -2,8 +2,10 @@
 //   --mass m1,m2,… --diameter … --density … --eps E [--nstar N] [--json]
 //   --mu μ --delta δ --w w --alpha α [--alpha11 --alpha22 --alpha12] [--nstar N] [--json]
 // Fields: T_ratio_maxwell (v1 Eq. A2), T_ratio_sonine and c (first-Sonine, MG App. A, any number of
-// species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), tau0 = 2/ξ at ⟨T⟩ = 1,
-// zeta_star in MG units. Fields that cannot be computed are omitted, never filled.
+// species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), D_sonine2_factor = D_k[2]/D_k[1]
+// (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3), tau0 = 2/ξ
+// at ⟨T⟩ = 1, zeta_star in MG units. Fields that cannot be computed are omitted, never filled.
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -14,6 +16,7 @@
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
 #include "theory/diffusion.hpp"
+#include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
 
 namespace granmix::compare {
@@ -71,25 +74,32 @@ int run(const HcsOptions& o) {
   const theory::SonineHcs sonine = theory::sonine_hcs(mix, law, chi);
   // τ₀ needs an absolute density: it is omitted for the dilute MG form and for a gas that does not cool.
   const bool has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
+  // NaN where the second-Sonine tracer problem has no diffusive solution (sonine2_diffusion.hpp).
+  std::vector<double> sonine2(mix.size());
+  for (std::size_t k = 0; k < mix.size(); ++k) sonine2[k] = theory::sonine2_factor(rates, k, d.T.data());
   if (o.json) {
     nlohmann::ordered_json j;  // keys in the order of design.md §3
     j["species"] = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < mix.size(); ++k)
-      j["species"].push_back(nlohmann::ordered_json{{"T_ratio_maxwell", d.T[k] / d.T[0]},
-                                                    {"T_ratio_sonine", sonine.T[k] / sonine.T[0]},
-                                                    {"c", sonine.c[k]},
-                                                    {"D_ratio", d.D_ratio[k]},
-                                                    {"tail_exponent", sonine.tail_exponent(k)}});
+    for (std::size_t k = 0; k < mix.size(); ++k) {
+      nlohmann::ordered_json s{{"T_ratio_maxwell", d.T[k] / d.T[0]},
+                               {"T_ratio_sonine", sonine.T[k] / sonine.T[0]},
+                               {"c", sonine.c[k]},
+                               {"D_ratio", d.D_ratio[k]},
+                               {"tail_exponent", sonine.tail_exponent(k)}};
+      if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
+      j["species"].push_back(s);
+    }
     if (has_tau0) j["tau0"] = d.tau0;
     j["zeta_star"] = sonine.zeta_star;
     std::printf("%s\n", j.dump().c_str());
     return 0;
   }
-  std::printf("%-8s %-12s %-12s %-12s %-21s %-21s %-21s %-21s %-12s\n", "species", "mass", "diameter", "density",
-              "T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent");
+  std::printf("%-8s %-12s %-12s %-12s %-21s %-21s %-21s %-21s %-12s %-16s\n", "species", "mass", "diameter", "density",
+              "T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor");
   for (std::size_t k = 0; k < mix.size(); ++k)
-    std::printf("%-8zu %-12.8g %-12.8g %-12.8g %-21.17g %-21.17g %-21.17g %-21.17g %-12.8g\n", k + 1, mix[k].mass, mix[k].diameter,
-                mix[k].density, d.T[k] / d.T[0], sonine.T[k] / sonine.T[0], sonine.c[k], d.D_ratio[k], sonine.tail_exponent(k));
+    std::printf("%-8zu %-12.8g %-12.8g %-12.8g %-21.17g %-21.17g %-21.17g %-21.17g %-12.8g %-16s\n", k + 1, mix[k].mass, mix[k].diameter,
+                mix[k].density, d.T[k] / d.T[0], sonine.T[k] / sonine.T[0], sonine.c[k], d.D_ratio[k], sonine.tail_exponent(k),
+                std::isfinite(sonine2[k]) ? fmt::format("{:.8g}", sonine2[k]).c_str() : "-");
   std::printf("zeta_star = %.17g   (first-Sonine reduced cooling rate, MG units n sigma12^2 v0)\n", sonine.zeta_star);
   if (has_tau0)
     std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);

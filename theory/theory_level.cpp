@@ -1,9 +1,11 @@
 #include "theory_level.hpp"
 
+#include <cmath>
 #include <limits>
 #include <stdexcept>
 
 #include "settled_ratios.hpp"
+#include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
 
@@ -25,8 +27,8 @@ class PaperLevel final : public TheoryLevel {
 
 // The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
-// ODE, the tagged velocity decaying at the momentum-transfer rate ν_k (the exact first-Sonine MSD,
-// transients included); settled states from the first-Sonine HCS. Viscoelastic laws keep the
+// ODE (transients included) with the tagged velocity decaying at the rate that gives the second-Sonine
+// D_k in the diffusive regime (ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], physics-beyond §3); settled states from the first-Sonine HCS. Viscoelastic laws keep the
 // Maxwellian cooling (MG's Sonine terms are for constant restitution), and so does an elastic gas,
 // whose settled state is the Maxwellian equilibrium (the cumulant equations are singular there).
 bool sonine_applies(const CollisionRates& rates) {
@@ -42,11 +44,20 @@ class KineticLevel final : public TheoryLevel {
   const char* name() const override { return "kinetic"; }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
-    if (sonine_applies(rates)) opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
+    if (!sonine_applies(rates)) return;
+    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
+    opt.decay = std::make_shared<SecondSonineDecay>(rates);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
     if (!sonine_applies(rates)) return d;
+    // Second-Sonine D_k (physics-beyond §3); where the expansion has no diffusive solution (NaN, a
+    // large rare grain near the Santos–Dufty edge) the first-Sonine D stays.
+    for (std::size_t k = 0; k < T.size(); ++k) {
+      const double f = sonine2_factor(rates, k, T.data());
+      if (std::isfinite(f)) d.D[k] *= f, d.tau_v[k] *= f;  // τ_v = D m/T: the memory of the MSD's closed form
+    }
+    for (std::size_t k = 0; k < T.size(); ++k) d.D_ratio[k] = d.D[k] / d.D[0];
     // τ₀ = 2/ξ with the first-Sonine rate at the steady cumulants of these temperatures.
     std::vector<double> xi(T.size());
     SonineCooling(rates, CumulantMode::quasi_static).rates(T.data(), nullptr, xi.data(), nullptr);

@@ -13,6 +13,7 @@
 #include "theory/diffusion.hpp"
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
+#include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
 
 using namespace granmix;
@@ -153,7 +154,20 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   const auto ordered = nlohmann::ordered_json::parse(r.output);
   std::vector<std::string> keys;
   for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());
-  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent"});
+  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor"});
+  // Second-Sonine factor D_k[2]/D_k[1] at the settled ratios, computed in-process (0.9209 for the light species).
+  for (std::size_t k = 0; k < 2; ++k)
+    CHECK(j["species"][k]["D_sonine2_factor"].get<double>() == Approx(theory::sonine2_factor(rates, k, d.T.data())).epsilon(1e-14));
+}
+
+TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapman-Cowling second approximation)", "[compare]") {
+  const auto r = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 1 --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  CHECK(nlohmann::json::parse(r.output)["species"][0]["D_sonine2_factor"].get<double>() == Approx(59.0 / 58).epsilon(1e-14));
+  const auto text = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 1");
+  CHECK(text.output.find("D_sonine2_factor") != std::string::npos);
+  CHECK(text.output.find("1.0172414") != std::string::npos);  // 59/58 = 1.01724138 to the column's 8 digits
 }
 
 TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "[compare]") {

@@ -1,0 +1,65 @@
+#include "sonine2_diffusion.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+
+namespace granmix::theory {
+
+// Closed forms of C_pq = ⟨S_q(c²) ∫dσ̂ Θ(g·σ̂)(g·σ̂) c·[c S_p(c²) − c′ S_p(c′²)]⟩ for one pair,
+// derived (sympy, exact polynomial integration) by writing v = a g + G with g = v − w and
+// G ⊥ g Gaussian, a = A_k/V, V = A_k + A_i, A = T/m; then the hemisphere around ĝ, the Gaussian
+// moments of G and the Maxwell moments of |g| are elementary. With β = μ_ik(1+ε_ki) and
+// P = n_i σ_ki² χ_ki √(2πV):
+//   C₀₀ = 2βP                                   (= (3/2)ν_ki, physics-beyond §1)
+//   C₀₁ = −aβP
+//   C₁₀ = −βP (3a² − 9aβ + 10a + 4β² − 5β)/a
+//   C₁₁ = βP (30 − 33β + 12β² + 22a − 9aβ − 3a²)/2
+// Checks (tests/theory/test_sonine2_diffusion.cpp): an independent quadrature over both
+// Maxwellians and σ̂; elastic equal temperatures: C₀₁ = C₁₀ (self-adjoint operator); elastic
+// Lorentz gas (a = 1, β = 2): C₀₁/C₀₀ = −1/2, C₁₁/C₀₀ = 13/4, hence D[2]/D[1] = 13/12.
+SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai) {
+  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
+  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
+  return {2.0 * bP, -a * bP, -bP * (3.0 * a * a - 9.0 * a * b + 10.0 * a + 4.0 * b * b - 5.0 * b) / a,
+          0.5 * bP * (30.0 - 33.0 * b + 12.0 * b * b + 22.0 * a - 9.0 * a * b - 3.0 * a * a)};
+}
+
+SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T) {
+  if (rates.law().is_viscoelastic())
+    throw std::invalid_argument("second-Sonine diffusion: closed forms need a constant restitution per pair, not a viscoelastic law");
+  const model::Mixture& mix = rates.mixture();
+  const double mk = mix[k].mass, Ak = T[k] / mk;
+  SonineCollisionIntegrals sum;
+  for (std::size_t i = 0; i < mix.size(); ++i) {
+    const double mi = mix[i].mass, s = mix.sigma(k, i);
+    const SonineCollisionIntegrals c =
+        sonine2_pair_integrals(mix[i].density * s * s * rates.chi(k, i), mi / (mi + mk), rates.law().eps(k, i), Ak, T[i] / mi);
+    sum.C00 += c.C00, sum.C01 += c.C01, sum.C10 += c.C10, sum.C11 += c.C11;
+  }
+  return sum;
+}
+
+double sonine2_factor(const SonineCollisionIntegrals& C, double zeta) {
+  // D[2]/D[1] = (C₀₀ − ¾ζ) / [C₀₀ − ¾ζ − C₀₁(C₁₀ + 15ζ/4)/(C₁₁ − 45ζ/8)] (physics-beyond §3).
+  const double first = C.C00 - 0.75 * zeta, c11 = C.C11 - 5.625 * zeta;
+  const double second = first - C.C01 * (C.C10 + 3.75 * zeta) / c11;
+  if (!(first > 0.0 && c11 > 0.0 && second > 0.0)) return std::numeric_limits<double>::quiet_NaN();
+  return first / second;
+}
+
+double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* T) {
+  // ζ = ξ_k: the tagged species' temperature T_k sets the scaling of its tracer problem, and T_k
+  // decays at ξ_k (equal to the common ζ once settled).
+  return sonine2_factor(sonine2_collision_integrals(rates, k, T), rates.xi_species(k, T));
+}
+
+double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T) {
+  const double xi = rates.xi_species(k, T);
+  const double factor = sonine2_factor(sonine2_collision_integrals(rates, k, T), xi);
+  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1); no second-Sonine solution: the first-Sonine ν_k.
+  return 0.5 * xi + rates.inv_tau_v_species(k, T) / (std::isfinite(factor) ? factor : 1.0);
+}
+
+}  // namespace granmix::theory

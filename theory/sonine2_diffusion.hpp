@@ -1,0 +1,61 @@
+#pragma once
+// Tracer diffusion of species k beyond the first Sonine approximation (physics-beyond.md §3;
+// Garzó & Montanero PRE 69, 021301 (2004) at a₂ = 0, any number of partner species).
+// The Chapman–Enskog solution of the tracer (Boltzmann–Lorentz) problem is expanded in
+// c S_p(c²) f_M, c = V/√(2T_k/m_k), p = 0, 1. With the Maxwellian collision integrals C_pq
+// (test function c S_q, basis c S_p, closed forms in sonine2_diffusion.cpp) and the time-derivative
+// matrix of the scaled problem (−¾ζ, 0; 15ζ/4, −45ζ/8):
+//   D_k[1] = (3T_k/2m_k) / (C₀₀ − ¾ζ) = T_k / (m_k(ν_k − ζ/2))
+//   D_k[2] = (3T_k/2m_k) / [C₀₀ − ¾ζ − C₀₁(C₁₀ + 15ζ/4)/(C₁₁ − 45ζ/8)]
+// Cost O(N) per species, no quadrature: meant for ODE right-hand sides.
+#include <cstddef>
+
+#include "collision_rates.hpp"
+#include "cooling_model.hpp"
+
+namespace granmix::theory {
+
+// C_pq summed over the partners i of species k (rates in the units of the mixture).
+struct SonineCollisionIntegrals {
+  double C00 = 0.0, C01 = 0.0, C10 = 0.0, C11 = 0.0;
+};
+
+// One pair (k, i): weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i+m_k), eps = ε_ki,
+// Ak = T_k/m_k, Ai = T_i/m_i.
+SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai);
+
+// Σ_i over all partners of k at the temperatures T (constant restitution only: the closed forms
+// need ε independent of the impact velocity; a viscoelastic law throws std::invalid_argument).
+SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T);
+
+// D_k[2]/D_k[1] with the cooling rate zeta that scales the problem (the common ζ of the HCS).
+// NaN where the truncated problem has no diffusive solution: C₀₀ − ¾ζ ≤ 0 (ν_k ≤ ζ/2, no first-Sonine
+// D either: the Santos–Dufty regime of a large rare grain) or a non-positive second-Sonine denominator.
+// Close to that edge (ν_k − ζ/2 ≪ ν_k) the factor grows without bound (2.06 for k = 40 of v1 Fig. 8 at
+// the settled ratios): there the Sonine expansion does not converge and the factor is no estimate.
+double sonine2_factor(const SonineCollisionIntegrals& C, double zeta);
+
+// D_k[2]/D_k[1] at the temperatures T with ζ = ξ_k(T), the tagged species' own cooling rate: the
+// tracer problem is scaled with T_k, whose decay rate is ξ_k. In the settled HCS every ξ_k equals
+// the common ζ, so this is the Garzó–Montanero value; away from it, it is our choice (documented).
+double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* T);
+
+// Velocity-decay rate of species k at the kinetic level (physics-beyond.md §3, last line):
+//   ν_eff,k = ξ_k/2 + (ν_k − ξ_k/2)·D_k[1]/D_k[2],  ν_k − ξ_k/2 = τ_v,k⁻¹ (physics-beyond.md §1),
+// so that the VACF form of the MSD (msd.hpp) gives D_k[2] in its diffusive regime. Where the factor
+// is NaN (see above) this is the first-Sonine ν_k, the rate the MSD needs without a diffusive regime.
+double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T);
+
+// The same as the VACF ODE's decay closure (the kinetic level's, theory_level.cpp).
+class SecondSonineDecay final : public VelocityDecay {
+ public:
+  explicit SecondSonineDecay(const CollisionRates& rates) : rates_(rates) {}
+  void rates(const double* T, const double*, double* nu) const override {
+    for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, k, T);
+  }
+
+ private:
+  const CollisionRates& rates_;
+};
+
+}  // namespace granmix::theory
