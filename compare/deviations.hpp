@@ -21,6 +21,7 @@ struct Deviation {
   double theory, dsmc, dsmc_err, rel, z;
   bool judged, pass;
   double paper_rel = 0.0;  // (dsmc − paper level)/|paper level|; NaN without a paper column
+  double model_error = 0.0;  // the relative tolerance applied at this point (relative + computed correction)
 };
 
 struct QuantityResult {
@@ -28,6 +29,7 @@ struct QuantityResult {
   std::size_t points = 0, judged = 0, failed = 0;
   double max_rel = 0.0, max_z = 0.0;  // over judged points (|rel|, |z|)
   double max_paper_rel = NAN;         // the paper level's largest |rel| over the same points (NaN: none)
+  double max_model_error = 0.0;       // largest relative tolerance applied (relative + correction)
   bool pass() const { return failed == 0 && judged > 0; }
 };
 

@@ -39,6 +39,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   for (const auto& q : o.quantities) {
     j["quantities"][label(q.spec)] = {{"max_rel", q.max_rel},
                                     {"max_z", q.max_z},
+                                    {"max_model_error", q.max_model_error},
                                     {"tolerance", tolerance_json(q.spec)},
                                     {"points", q.points},
                                     {"judged", q.judged},

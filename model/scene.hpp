@@ -77,6 +77,10 @@ struct DsmcSettings {
 struct CompareQuantity {
   std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
   std::string theory;           // the theory column that predicts the DSMC column `name` (default: name)
+  // Model error computed point by point as the size of the judged theory's last correction:
+  // |theory − theory_<correction_from>| / |theory| ("paper": the paper level; "maxwell": the
+  // Maxwellian column of a Sonine quantity), added to `relative`. Empty: `relative` alone.
+  std::string correction_from;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)
