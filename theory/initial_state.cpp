@@ -10,9 +10,7 @@
 
 namespace granmix::theory {
 
-namespace {
-
-std::vector<double> aged(double T_hot, const CollisionRates& rates) {
+AgedState aged_state(double T_hot, const CollisionRates& rates, const TemperatureOptions& opt) {
   const std::size_t N = rates.size();
   const std::vector<double> hot(N, T_hot);
   std::vector<double> xi(N);
@@ -23,7 +21,7 @@ std::vector<double> aged(double T_hot, const CollisionRates& rates) {
   if (!(xi_mean > 0.0)) throw InputError("initial state 'aged' needs a cooling gas (ε < 1)");
   // Haff estimate of the time to reach ⟨T⟩ = 1 from T_hot, with a wide margin for slow species.
   const double t_haff = 2.0 / xi_mean * (std::sqrt(T_hot) - 1.0);
-  const TemperatureHistory h(rates, hot, 1e7 * t_haff);  // covers the widest bracket below
+  const TemperatureHistory h(rates, hot, 1e7 * t_haff, opt);  // covers the widest bracket below
   std::vector<double> T(N);
   auto excess = [&](double log_t) {
     h.temperatures(std::exp(log_t), T.data());
@@ -37,17 +35,17 @@ std::vector<double> aged(double T_hot, const CollisionRates& rates) {
   h.temperatures(std::exp(lt), T.data());
   const double mean = rates.mixture().mean_temperature(T);
   for (double& v : T) v /= mean;  // remove the root's last rounding: ⟨T⟩ = 1 exactly
-  return T;
+  std::vector<double> z(opt.cooling ? opt.cooling->state_size() : 0);
+  if (!z.empty()) h.states(std::exp(lt), z.data());
+  return {T, z};
 }
-
-}  // namespace
 
 std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates) {
   const std::size_t N = rates.size();
   switch (init.kind) {
     case model::InitialState::Kind::equal: return std::vector<double>(N, 1.0);
     case model::InitialState::Kind::hcs: return settled_temperatures(rates).T;
-    case model::InitialState::Kind::aged: return aged(init.T_hot, rates);
+    case model::InitialState::Kind::aged: return aged_state(init.T_hot, rates, {}).T;
     case model::InitialState::Kind::explicit_list:
       if (init.values.size() != N) throw InputError("initial temperatures: one value per species needed");
       return init.values;

@@ -167,7 +167,6 @@ std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& 
 std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats) {
   const auto& o = s.observables;
   const MsdMethod method = level.msd_method(s);
-  const std::vector<double> T0 = initial_temperatures(s.initial, rates);
   TemperatureOptions opt;
   opt.rtol = s.theory.rtol;
   opt.t_first = s.times.front();
@@ -176,6 +175,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   opt.diffusion_integral = msd && method == MsdMethod::longtime;
   opt.vacf = msd && method == MsdMethod::vacf;
   level.configure(opt, rates);
+  const std::vector<double> T0 = level.initial_temperatures(s.initial, rates, opt);
   const TemperatureHistory h(rates, T0, s.times.back(), opt);
   stats = h.stats();
   const bool settled = o.tamsd || (msd && method == MsdMethod::closed);

@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "initial_state.hpp"
 #include "settled_ratios.hpp"
 #include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
@@ -21,6 +22,10 @@ class PaperLevel final : public TheoryLevel {
   void configure(TemperatureOptions&, const CollisionRates&) const override {}
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     return theory::diffusion_at(rates, std::move(T));
+  }
+  std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
+                                           TemperatureOptions&) const override {
+    return theory::initial_temperatures(init, rates);
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return theory::settled_temperatures(rates).T; }
 };
@@ -63,6 +68,15 @@ class KineticLevel final : public TheoryLevel {
     SonineCooling(rates, CumulantMode::quasi_static).rates(T.data(), nullptr, xi.data(), nullptr);
     d.tau0 = xi[0] > 0.0 ? 2.0 / xi[0] : std::numeric_limits<double>::infinity();
     return d;
+  }
+  // The DSMC ages its gas with the true collisions: its aged start has the settled cumulants, which the
+  // relaxing Sonine model then starts from. The other starts are Maxwellian in DSMC too.
+  std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
+                                           TemperatureOptions& opt) const override {
+    if (init.kind != model::InitialState::Kind::aged || !sonine_applies(rates)) return theory::initial_temperatures(init, rates);
+    const AgedState a = aged_state(init.T_hot, rates, opt);
+    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, a.z);
+    return a.T;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;

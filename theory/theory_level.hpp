@@ -28,6 +28,10 @@ class TheoryLevel {
   virtual void configure(TemperatureOptions& opt, const CollisionRates& rates) const = 0;
   // D_k, the MSD's velocity memory τ_v,k and τ₀ at the temperatures T (no settling).
   virtual SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const = 0;
+  // The scene's initial temperatures as the level predicts them: the aged start is the level's own
+  // cooling history (and may set the cooling model's initial unknowns in opt); others as the scene says.
+  virtual std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
+                                                   TemperatureOptions& opt) const = 0;
   // The level's settled temperatures (⟨T⟩ = 1).
   virtual std::vector<double> settled_temperatures(const CollisionRates& rates) const = 0;
 };
