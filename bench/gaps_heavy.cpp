@@ -20,10 +20,12 @@ namespace granmix::bench {
 namespace {
 
 constexpr std::size_t heavy_from = 12;  // species 13–43: the scene's heavy group (1–38 particles at N = 1e5)
+constexpr std::size_t heaviest_from = 26;  // species 27–43 (β_k nearest 1): where the memory gap lives
 
 // Pooled series of one species: slot 0 all replicas, slot r + 1 replica r left out.
 struct Pooled {
   std::vector<std::vector<double>> v2, v4, Q, M, M_T;
+  std::vector<double> M_T_slow;  // all replicas, ν lowered by 1%: the MSD's sensitivity to the rate
 };
 
 std::size_t slot(std::size_t excluded) { return excluded == TaggedRun::npos ? 0 : excluded + 1; }
@@ -56,7 +58,7 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
   out.table.columns = {"particles_total", "species", "particles", "t", "T_ratio", "T_ratio_err", "T_ratio_theory", "T_over_theory",
                        "T_over_theory_err", "msd_ratio", "msd_ratio_err", "msd_ratio_eq17", "msd_ratio_vacf", "msd_over_eq17",
                        "msd_over_eq17_err", "msd_T_over_eq17", "msd_T_over_eq17_err", "memory", "memory_err", "nu_eff_over_nu",
-                       "nu_eff_over_nu_err", "c", "c_err", "spread", "spread_gaussian", "z"};
+                       "nu_eff_over_nu_err", "c", "c_err", "spread", "spread_gaussian", "z", "vacf_over_eq17", "msd_sensitivity"};
   replicas.columns = {"particles_total", "replica", "species", "particles", "t", "msd_ratio", "T_ratio", "msd_ratio_eq17"};
   for (std::size_t N : sizes) {
     const std::vector<std::size_t> counts = counts_at_least_one(mix, N);
@@ -85,6 +87,8 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
         p.Q.push_back(series(run, k, TaggedRun::rv, e)), p.M.push_back(series(run, k, TaggedRun::r2, e));
         p.M_T.push_back(msd_from_memory(t, p.v2.back(), nu));
       }
+      for (double& x : nu) x *= 0.99;
+      pooled[k].M_T_slow = msd_from_memory(t, pooled[k].v2[0], nu);
     }
     for (std::size_t i = 0; i < reports.size(); ++i) {
       const std::size_t j = index_of(t, reports[i]), a = index_of(t, reports[i] / 10);
@@ -94,6 +98,14 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
       auto msd_over = [&](std::size_t k, std::size_t e) { return pooled[k].M[slot(e)][j] / eq17[i][k]; };
       auto msdT_over = [&](std::size_t k, std::size_t e) { return pooled[k].M_T[slot(e)][j] / eq17[i][k]; };
       auto memory = [&](std::size_t k, std::size_t e) { return pooled[k].M[slot(e)][j] / pooled[k].M_T[slot(e)][j]; };
+      auto offset = [&](std::size_t k, std::size_t) { return h.msd_vacf(t[j], k) / eq17[i][k]; };
+      auto temperature = [&](std::size_t k, std::size_t e) { return pooled[k].M_T[slot(e)][j] / h.msd_vacf(t[j], k); };
+      auto cumulant = [&](std::size_t k, std::size_t e) {  // c = 2a₂ (physics.md §6), pooled over the replicas in use
+        const double v2 = pooled[k].v2[slot(e)][j], v4 = pooled[k].v4[slot(e)][j];
+        return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0);
+      };
+      // d ln M / d ln ν of the Maxwellian-memory MSD: near β_k = 1 a small rate error is amplified.
+      auto sensitivity = [&](std::size_t k, std::size_t) { return std::log(pooled[k].M_T_slow[j] / pooled[k].M_T[0][j]) / std::log(0.99); };
       auto nu_over = [&](std::size_t k, std::size_t e) {  // measured collisional loss of Q over the first-Sonine prediction
         const Pooled& p = pooled[k];
         std::vector<double> nuQ(J);
@@ -105,10 +117,7 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
         auto jk = [&](auto f) { return jackknife(R, [&](std::size_t e) { return f(k, e); }); };
         const auto Tr = jackknife(R, [&](std::size_t e) { return pooled[k].v2[slot(e)][j] * mix[k].mass / (pooled[0].v2[slot(e)][j]); });
         const auto Mr = jackknife(R, [&](std::size_t e) { return pooled[k].M[slot(e)][j] / pooled[0].M[slot(e)][j]; });
-        const auto c = jackknife(R, [&](std::size_t e) {
-          const double v2 = pooled[k].v2[slot(e)][j], v4 = pooled[k].v4[slot(e)][j];
-          return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0);
-        });
+        const auto c = jk(cumulant);
         // Spread of one replica's MSD estimate (relative standard deviation over replicas).
         double s1 = 0.0, s2 = 0.0;
         for (std::size_t r = 0; r < R; ++r) {
@@ -121,7 +130,8 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
         out.table.rows.push_back({double(N), double(k + 1), double(counts[k]), t[j], Tr.first, Tr.second, h.temperature(t[j], k) / T1_th,
                                   to.first, to.second, Mr.first, Mr.second, ratio_eq17, h.msd_vacf(t[j], k) / M1_vacf, mo.first, mo.second,
                                   mt.first, mt.second, me.first, me.second, no.first, no.second, c.first, c.second, spread,
-                                  std::sqrt(2.0 / (3.0 * double(counts[k]))), (Mr.first - ratio_eq17) / Mr.second});
+                                  std::sqrt(2.0 / (3.0 * double(counts[k]))), (Mr.first - ratio_eq17) / Mr.second,
+                                  offset(k, 0), sensitivity(k, 0)});
         if (i + 1 == reports.size())
           for (std::size_t r = 0; r < R; ++r)
             replicas.rows.push_back({double(N), double(r), double(k + 1), double(counts[k]), t[j],
@@ -130,26 +140,35 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
                                          (run.sum(r, j, 0, TaggedRun::v2) / double(counts[0])),
                                      ratio_eq17});
       }
-      // The heavy group: particle-weighted means over species 13–43 (each heavy particle counts once).
-      auto group = [&](auto f) {
-        return jackknife(R, [&](std::size_t e) {
-          double s = 0.0, w = 0.0;
-          for (std::size_t k = heavy_from; k < S; ++k) s += double(counts[k]) * f(k, e), w += double(counts[k]);
-          return s / w;
-        });
-      };
-      const auto gm = group(msd_over), gt = group(T_over), gmt = group(msdT_over), gme = group(memory), gn = group(nu_over);
-      const auto l1 = jackknife(R, [&](std::size_t e) { return msd_over(0, e); });
-      std::size_t above = 0, below = 0;
-      for (std::size_t k = heavy_from; k < S; ++k) {
-        const double z = out.table.rows[out.table.rows.size() - S + k].back();
-        above += z > 4, below += z < -4;
+      const bool report = o.quick || i % 3 == 0;  // t = 1e3, 1e6, 1e9
+      for (std::size_t from : {heavy_from, heaviest_from}) {
+        const std::size_t to = from == heavy_from ? heaviest_from : S;
+        auto part = [&](auto f) {  // particle-weighted mean over species [from, to) (each particle counts once), jackknifed
+          return jackknife(R, [&](std::size_t e) {
+            double s = 0.0, w = 0.0;
+            for (std::size_t k = from; k < to; ++k) s += double(counts[k]) * f(k, e), w += double(counts[k]);
+            return s / w;
+          });
+        };
+        const auto gm = part(msd_over), go = part(offset), gt = part(temperature), gme = part(memory), gn = part(nu_over);
+        const auto gT = part(T_over), gc = part(cumulant), gs = part(sensitivity);
+        std::size_t above = 0, below = 0;
+        for (std::size_t k = from; k < to; ++k) {
+          const double z = out.table.rows[out.table.rows.size() - S + k][25];
+          above += z > 4, below += z < -4;
+        }
+        if (report)
+          out.summary.push_back(fmt::format(
+              "bo1-fig08 N = {:g} t = {:g} species {}-{} ({}-{} particles): MSD/Eq17 = {:.3f} +- {:.3f} = offset {:.3f} x temperature {:.3f} "
+              "+- {:.3f} x memory {:.3f} +- {:.3f}; nu_eff/nu (last decade) {:.3f} +- {:.3f}, T/T_th {:.3f} +- {:.3f}, c {:.3f} +- {:.3f}, "
+              "dlnM/dlnnu {:.1f}; z > 4: {}, z < -4: {} of {}",
+              double(N), t[j], from + 1, to, counts[to - 1], counts[from], gm.first, gm.second, go.first, gt.first, gt.second, gme.first,
+              gme.second, gn.first, gn.second, gT.first, gT.second, gc.first, gc.second, gs.first, above, below, to - from));
       }
-      out.summary.push_back(fmt::format(
-          "bo1-fig08 N = {:g} t = {:g}: heavy group MSD/Eq17 = {:.3f} +- {:.3f} = temperature {:.3f} +- {:.3f} (T/T_th {:.3f} +- {:.3f}) x "
-          "memory {:.3f} +- {:.3f} (nu_eff/nu {:.3f} +- {:.3f}); species 1 MSD/Eq17 = {:.4f} +- {:.4f}; heavy z > 4: {}, z < -4: {} of {}",
-          double(N), t[j], gm.first, gm.second, gmt.first, gmt.second, gt.first, gt.second, gme.first, gme.second, gn.first, gn.second,
-          l1.first, l1.second, above, below, S - heavy_from));
+      const auto l1 = jackknife(R, [&](std::size_t e) { return msd_over(0, e); });
+      if (report)
+        out.summary.push_back(fmt::format("bo1-fig08 N = {:g} t = {:g} species 1: MSD/Eq17 = {:.4f} +- {:.4f}, T/T_th = {:.4f}, c = {:.3f}",
+                                          double(N), t[j], l1.first, l1.second, T_over(0, TaggedRun::npos), cumulant(0, TaggedRun::npos)));
     }
   }
   return out;
