@@ -99,7 +99,6 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
       auto msdT_over = [&](std::size_t k, std::size_t e) { return pooled[k].M_T[slot(e)][j] / eq17[i][k]; };
       auto memory = [&](std::size_t k, std::size_t e) { return pooled[k].M[slot(e)][j] / pooled[k].M_T[slot(e)][j]; };
       auto offset = [&](std::size_t k, std::size_t) { return h.msd_vacf(t[j], k) / eq17[i][k]; };
-      auto temperature = [&](std::size_t k, std::size_t e) { return pooled[k].M_T[slot(e)][j] / h.msd_vacf(t[j], k); };
       auto cumulant = [&](std::size_t k, std::size_t e) {  // c = 2a₂ (physics.md §6), pooled over the replicas in use
         const double v2 = pooled[k].v2[slot(e)][j], v4 = pooled[k].v4[slot(e)][j];
         return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0);
@@ -143,20 +142,26 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
       const bool report = o.quick || i % 3 == 0;  // t = 1e3, 1e6, 1e9
       for (std::size_t from : {heavy_from, heaviest_from}) {
         const std::size_t to = from == heavy_from ? heaviest_from : S;
-        auto part = [&](auto f) {  // particle-weighted mean over species [from, to) (each particle counts once), jackknifed
-          return jackknife(R, [&](std::size_t e) {
-            double s = 0.0, w = 0.0;
-            for (std::size_t k = from; k < to; ++k) s += double(counts[k]) * f(k, e), w += double(counts[k]);
-            return s / w;
-          });
+        auto mean = [&](auto f, std::size_t e) {  // particle-weighted mean over species [from, to): each particle counts once
+          double s = 0.0, w = 0.0;
+          for (std::size_t k = from; k < to; ++k) s += double(counts[k]) * f(k, e), w += double(counts[k]);
+          return s / w;
         };
-        const auto gm = part(msd_over), go = part(offset), gt = part(temperature), gme = part(memory), gn = part(nu_over);
+        auto part = [&](auto f) { return jackknife(R, [&](std::size_t e) { return mean(f, e); }); };
+        auto ratio_of = [&](auto f, auto g) { return jackknife(R, [&](std::size_t e) { return mean(f, e) / mean(g, e); }); };
+        // Factors as ratios of group means, so that offset x temperature x memory = MSD/Eq17 exactly.
+        const auto gm = part(msd_over), go = part(offset), gt = ratio_of(msdT_over, offset), gme = ratio_of(msd_over, msdT_over);
+        const auto gn = part(nu_over);
         const auto gT = part(T_over), gc = part(cumulant), gs = part(sensitivity);
         std::size_t above = 0, below = 0;
         for (std::size_t k = from; k < to; ++k) {
           const double z = out.table.rows[out.table.rows.size() - S + k][25];
           above += z > 4, below += z < -4;
         }
+        out.json.push_back(fmt::format("{{\"case\": \"bo1-fig08\", \"particles\": {}, \"t\": {:g}, \"species_from\": {}, \"species_to\": {}, "
+                                       "\"msd_over_eq17\": {:.6g}, \"msd_over_eq17_err\": {:.3g}, \"offset\": {:.6g}, \"temperature\": {:.6g}, "
+                                       "\"memory\": {:.6g}, \"memory_err\": {:.3g}, \"nu_eff_over_nu\": {:.6g}, \"nu_eff_over_nu_err\": {:.3g}}}",
+                                       N, t[j], from + 1, to, gm.first, gm.second, go.first, gt.first, gme.first, gme.second, gn.first, gn.second));
         if (report)
           out.summary.push_back(fmt::format(
               "bo1-fig08 N = {:g} t = {:g} species {}-{} ({}-{} particles): MSD/Eq17 = {:.3f} +- {:.3f} = offset {:.3f} x temperature {:.3f} "

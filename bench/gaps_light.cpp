@@ -109,6 +109,9 @@ GapsPart light_gaps(const StudyOptions& o) {
       const std::size_t j = index_of(t, tr);
       if (j + 1 == J) continue;  // the end sample has no centred ν_eff window; the late D/D[1] line covers it
       const double rest = M[j] / M_mem[j];
+      out.json.push_back(fmt::format("{{\"case\": \"bo1-fig02\", \"species\": {}, \"t\": {:g}, \"msd_over_eq17\": {:.6g}, \"offset\": {:.6g}, "
+                                     "\"temperature\": {:.6g}, \"sonine2\": {:.6g}, \"transient\": {:.6g}, \"rest\": {:.6g}}}",
+                                     k + 1, t[j], M[j] / eq17[j], vacf[j] / eq17[j], M_T[j] / vacf[j], M_D2[j] / M_T[j], M_mem[j] / M_D2[j], rest));
       out.summary.push_back(fmt::format(
           "  {} t = {:g}: DSMC/Eq17 = {:.4f} (+- {:.4f}) = offset {:+.1f}% x temperature {:+.1f}% x sonine2 {:+.1f}% x transient {:+.1f}% "
           "x rest {:+.1f}%; c = {:.3f}, T/T_theory = {:.4f}, nu_eff/nu = {:.3f}",

@@ -51,7 +51,7 @@ inline std::size_t index_of(const std::vector<double>& times, double t) {
 
 struct GapsPart {
   model::Table table;
-  std::vector<std::string> summary;
+  std::vector<std::string> summary, json;  // json: one object per decomposed case (--json)
 };
 
 // bo1-fig02: per species T_k, c_k, Q_k, ν_eff against ν_k, D/D[1], MSD variants (series 0 light, 1 heavy).

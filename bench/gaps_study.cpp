@@ -19,6 +19,7 @@ StudyResult gaps_study(const StudyOptions& o) {
   GapsPart light = light_gaps(o);
   out.table = std::move(light.table);
   out.summary = std::move(light.summary);
+  out.json = std::move(light.json);
   out.figure = {"t", "msd_over_eq17", "t", "MSD / v1 Eq. (17)", true, false, {"DSMC light (m = 1)", "DSMC heavy (m = 100)"}, {}};
   const char* rebuilt[][2] = {{"msd_vacf", "VACF form (first Sonine)"},
                               {"msd_T", "+ measured T_k(t)"},
@@ -31,6 +32,7 @@ StudyResult gaps_study(const StudyOptions& o) {
   model::Table replicas;
   GapsPart heavy = heavy_gaps(o, replicas);
   out.summary.insert(out.summary.end(), heavy.summary.begin(), heavy.summary.end());
+  out.json.insert(out.json.end(), heavy.json.begin(), heavy.json.end());
   out.tables.push_back({"gaps_fig08", std::move(heavy.table)});
   out.tables.push_back({"gaps_replicas", std::move(replicas)});
   model::Table z;
