@@ -335,16 +335,26 @@ TEST_CASE("settled distribution of an elastic binary: the DSMC histogram is the 
   CHECK(ds.rows.size() == 48);
 }
 
+namespace {
+
+// The JSON objects (lines starting with '{') that `granmix bench STUDY --json` printed.
+std::vector<nlohmann::json> json_lines(const std::string& output) {
+  std::vector<nlohmann::json> out;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] == '{') out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+}  // namespace
+
 TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of design.md 3 - table and figure written", "[compare][dsmc]") {
   const auto d = test::fresh_dir("bench");
   const auto r = test::run_granmix("bench selectors --quick --json --repeats 1 --out " + d.string());
   INFO(r.output);
   REQUIRE(r.code == 0);
-  std::istringstream lines(r.output);
   std::size_t cases = 0;
-  for (std::string line; std::getline(lines, line);) {
-    if (line.empty() || line[0] != '{') continue;
-    const auto j = nlohmann::json::parse(line);
+  for (const auto& j : json_lines(r.output)) {
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
     // design.md §3 names these nine; extensions may follow, none may be renamed or missing.
@@ -367,11 +377,8 @@ TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factor
   const auto r = test::run_granmix("bench gaps --quick --json --out " + d.string());
   INFO(r.output);
   REQUIRE(r.code == 0);
-  std::istringstream lines(r.output);
   std::size_t light = 0, heavy = 0;
-  for (std::string line; std::getline(lines, line);) {
-    if (line.empty() || line[0] != '{') continue;
-    const auto j = nlohmann::json::parse(line);
+  for (const auto& j : json_lines(r.output)) {
     if (j["case"] == "bo1-fig02") {
       // The factors are ratios of successive MSD variants: their product is DSMC / Eq. 17 up to rounding of the printout.
       const double product = j["offset"].get<double>() * j["temperature"].get<double>() * j["sonine2"].get<double>() *
