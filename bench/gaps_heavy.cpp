@@ -99,10 +99,7 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
       auto msdT_over = [&](std::size_t k, std::size_t e) { return pooled[k].M_T[slot(e)][j] / eq17[i][k]; };
       auto memory = [&](std::size_t k, std::size_t e) { return pooled[k].M[slot(e)][j] / pooled[k].M_T[slot(e)][j]; };
       auto offset = [&](std::size_t k, std::size_t) { return h.msd_vacf(t[j], k) / eq17[i][k]; };
-      auto cumulant = [&](std::size_t k, std::size_t e) {  // c = 2a₂ (physics.md §6), pooled over the replicas in use
-        const double v2 = pooled[k].v2[slot(e)][j], v4 = pooled[k].v4[slot(e)][j];
-        return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0);
-      };
+      auto cumulant = [&](std::size_t k, std::size_t e) { return cumulant_of(pooled[k].v2[slot(e)][j], pooled[k].v4[slot(e)][j]); };
       // d ln M / d ln ν of the Maxwellian-memory MSD: near β_k = 1 a small rate error is amplified.
       auto sensitivity = [&](std::size_t k, std::size_t) { return std::log(pooled[k].M_T_slow[j] / pooled[k].M_T[0][j]) / std::log(0.99); };
       auto nu_over = [&](std::size_t k, std::size_t e) {  // measured collisional loss of Q over the first-Sonine prediction
@@ -155,7 +152,7 @@ GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas) {
         const auto gT = part(T_over), gc = part(cumulant), gs = part(sensitivity);
         std::size_t above = 0, below = 0;
         for (std::size_t k = from; k < to; ++k) {
-          const double z = out.table.rows[out.table.rows.size() - S + k][25];
+          const double z = out.table.rows[out.table.rows.size() - S + k][out.table.column("z")];
           above += z > 4, below += z < -4;
         }
         out.json.push_back(fmt::format("{{\"case\": \"bo1-fig08\", \"particles\": {}, \"t\": {:g}, \"species_from\": {}, \"species_to\": {}, "

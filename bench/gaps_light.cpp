@@ -88,10 +88,7 @@ GapsPart light_gaps(const StudyOptions& o) {
     for (std::size_t j = 0; j < J; ++j) {
       auto mean_of = [&](TaggedRun::Moment q) { return jackknife(R, [&](std::size_t e) { return run.mean(j, k, q, e); }); };
       const auto T = mean_of(TaggedRun::v2), Qj = mean_of(TaggedRun::rv), Mj = mean_of(TaggedRun::r2);
-      const auto c = jackknife(R, [&](std::size_t e) {
-        const double a = run.mean(j, k, TaggedRun::v2, e), b = run.mean(j, k, TaggedRun::v4, e);
-        return 2.0 * (0.6 * b / (a * a) - 1.0);  // c = 2a₂ (physics.md §6)
-      });
+      const auto c = jackknife(R, [&](std::size_t e) { return cumulant_of(run.mean(j, k, TaggedRun::v2, e), run.mean(j, k, TaggedRun::v4, e)); });
       const bool interior = j > 0 && j + 1 < J;
       const auto ne = interior ? jackknife(R, [&](std::size_t e) { return nu_eff_at(j, e); }) : std::pair{model::Table::missing, 0.0};
       const auto D = interior ? jackknife(R, [&](std::size_t e) { return (nu[j] - xi[j] / 2) / (nu_eff_at(j, e) - xi[j] / 2); })

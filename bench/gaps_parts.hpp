@@ -41,6 +41,9 @@ inline std::vector<double> series(const TaggedRun& run, std::size_t k, TaggedRun
   return s;
 }
 
+// c = 2a₂ = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] from per-particle means (physics.md §6).
+inline double cumulant_of(double v2, double v4) { return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0); }
+
 // Index of the grid time closest to t.
 inline std::size_t index_of(const std::vector<double>& times, double t) {
   std::size_t best = 0;
