@@ -5,7 +5,7 @@
 namespace granmix::bench {
 
 const std::vector<std::string>& study_names() {
-  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods"};
+  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods", "gaps"};
   return names;
 }
 
@@ -14,6 +14,7 @@ StudyResult run_study(const std::string& name, const StudyOptions& o) {
   if (name == "theory") return theory_study(o);
   if (name == "dsmc-error") return dsmc_error_study(o);
   if (name == "methods") return methods_study(o);
+  if (name == "gaps") return gaps_study(o);
   throw std::invalid_argument("bench: unknown study '" + name + "'");
 }
 

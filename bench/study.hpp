@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "model/table.hpp"
@@ -25,6 +26,7 @@ struct StudyResult {
   StudyFigure figure;
   std::vector<std::string> json;     // one JSON object per line (--json)
   std::vector<std::string> summary;  // lines for the terminal: targets and what was measured
+  std::vector<std::pair<std::string, model::Table>> tables;  // further tables: DIR/bench/<study>/<name>.tsv
 };
 
 struct StudyOptions {
@@ -38,6 +40,7 @@ StudyResult selectors_study(const StudyOptions& o);
 StudyResult theory_study(const StudyOptions& o);
 StudyResult dsmc_error_study(const StudyOptions& o);
 StudyResult methods_study(const StudyOptions& o);
+StudyResult gaps_study(const StudyOptions& o);  // issue 12: causes of the theory–DSMC gaps
 
 // Study names in the order `granmix bench` runs them.
 const std::vector<std::string>& study_names();

@@ -392,16 +392,26 @@ TEST_CASE("settled distribution of an elastic binary: the DSMC histogram is the 
   CHECK(ds.rows.size() == 48);
 }
 
+namespace {
+
+// The JSON objects (lines starting with '{') that `granmix bench STUDY --json` printed.
+std::vector<nlohmann::json> json_lines(const std::string& output) {
+  std::vector<nlohmann::json> out;
+  std::istringstream lines(output);
+  for (std::string line; std::getline(lines, line);)
+    if (!line.empty() && line[0] == '{') out.push_back(nlohmann::json::parse(line));
+  return out;
+}
+
+}  // namespace
+
 TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of design.md 3 - table and figure written", "[compare][dsmc]") {
   const auto d = test::fresh_dir("bench");
   const auto r = test::run_granmix("bench selectors --quick --json --repeats 1 --out " + d.string());
   INFO(r.output);
   REQUIRE(r.code == 0);
-  std::istringstream lines(r.output);
   std::size_t cases = 0;
-  for (std::string line; std::getline(lines, line);) {
-    if (line.empty() || line[0] != '{') continue;
-    const auto j = nlohmann::json::parse(line);
+  for (const auto& j : json_lines(r.output)) {
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
     // design.md §3 names these nine; extensions may follow, none may be renamed or missing.
@@ -417,4 +427,28 @@ TEST_CASE("granmix bench selectors --quick --json: one object per case with the 
   const auto bad = test::run_granmix("bench nosuchstudy --out " + d.string());
   CHECK(bad.code == 2);
   CHECK(bad.output.find("selectors, theory, dsmc-error, methods") != std::string::npos);
+}
+
+TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, four tables written", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("bench-gaps");
+  const auto r = test::run_granmix("bench gaps --quick --json --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  std::size_t light = 0, heavy = 0;
+  for (const auto& j : json_lines(r.output)) {
+    if (j["case"] == "bo1-fig02") {
+      // The factors are ratios of successive MSD variants: their product is DSMC / Eq. 17 up to rounding of the printout.
+      const double product = j["offset"].get<double>() * j["temperature"].get<double>() * j["sonine2"].get<double>() *
+                             j["transient"].get<double>() * j["rest"].get<double>();
+      CHECK(product == Approx(j["msd_over_eq17"].get<double>()).epsilon(1e-4));
+      ++light;
+    } else {
+      const double product = j["offset"].get<double>() * j["temperature"].get<double>() * j["memory"].get<double>();
+      CHECK(product == Approx(j["msd_over_eq17"].get<double>()).epsilon(1e-4));  // factors are ratios of group means
+      ++heavy;
+    }
+  }
+  CHECK(light >= 6);
+  CHECK(heavy >= 2);
+  for (const char* f : {"gaps.tsv", "gaps_fig08.tsv", "gaps_replicas.tsv", "gaps_znull.tsv"}) CHECK(std::filesystem::exists(d / "bench" / "gaps" / f));
 }
