@@ -277,7 +277,7 @@ TEST_CASE("sonine2: closed-form C_pq agree with a plain Monte Carlo (z < 4)", "[
     }
 }
 
-TEST_CASE("sonine2: C_00 = (3/2) nu and the identity tau_v^-1 = nu - xi/2 (physics-beyond §1)", "[theory]") {
+TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (physics-beyond §1), nu_eff from the library rates", "[theory]") {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 30; ++trial) {
@@ -297,6 +297,10 @@ TEST_CASE("sonine2: C_00 = (3/2) nu and the identity tau_v^-1 = nu - xi/2 (physi
         nu += nu_ki;
       }
       CHECK(sonine2_collision_integrals(r, k, T).C00 == Approx(1.5 * nu).epsilon(1e-13));
+      // The one-pass ξ_k and ν_eff against CollisionRates' own ξ_k and τ_v,k⁻¹.
+      const double xi = r.xi_species(k, T), factor = sonine2_factor(r, k, T);
+      CHECK(sonine2_tracer_sums(r, k, T).xi == Approx(xi).epsilon(1e-12).margin(1e-14 * nu));
+      CHECK(kinetic_velocity_decay_rate(r, k, T) == Approx(0.5 * xi + r.inv_tau_v_species(k, T) / factor).epsilon(1e-12));
     }
   }
 }
