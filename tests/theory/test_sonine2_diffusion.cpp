@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "model/enskog.hpp"
-#include "theory/diffusion.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/sonine2_diffusion.hpp"
 #include "theory_fixtures.hpp"
@@ -308,6 +307,12 @@ TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (physics-
 TEST_CASE("sonine2: elastic Lorentz gas D[2]/D[1] = 13/12, elastic self-diffusion 59/58", "[theory]") {
   // Light tracer among infinitely heavy scatterers at rest (A_i = 0): a = 1, β = 2.
   CHECK(sonine2_factor(sonine2_pair_integrals(1.0, 1.0, 1.0, 1.0, 0.0), 0.0) == Approx(13.0 / 12).epsilon(1e-15));
+  // Elastic, equal temperatures (A_k m_k = A_i m_i, so a = μ): the collision operator is self-adjoint
+  // in the Maxwellian weight, so C₀₁ = C₁₀ for every mass ratio (inelastic or T_i ≠ T_k they differ).
+  for (double mu : {0.01, 0.3, 0.5, 0.9, 0.999}) {
+    const SonineCollisionIntegrals c = sonine2_pair_integrals(1.0, mu, 1.0, mu, 1.0 - mu);
+    CHECK(c.C10 == Approx(c.C01).epsilon(1e-13));
+  }
   // The same through the mixture: scatterers of mass 1e12, equal temperatures, a tracer density of 1e-20.
   const CollisionRates lorentz = test::constant_rates({{1, 1, 1e-20}, {1e12, 1, 1}}, 1.0);
   const double T2[2] = {1.0, 1.0};
