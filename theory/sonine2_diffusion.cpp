@@ -26,19 +26,23 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
           0.5 * bP * (30.0 - 33.0 * b + 12.0 * b * b + 22.0 * a - 9.0 * a * b - 3.0 * a * a)};
 }
 
-SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T) {
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T) {
   if (rates.law().is_viscoelastic())
     throw std::invalid_argument("second-Sonine diffusion: closed forms need a constant restitution per pair, not a viscoelastic law");
   const model::Mixture& mix = rates.mixture();
-  const double mk = mix[k].mass, Ak = T[k] / mk;
-  SonineCollisionIntegrals sum;
+  const double mk = mix[k].mass, Tk = T[k], Ak = Tk / mk;
+  SonineTracerSums sum;
   for (std::size_t i = 0; i < mix.size(); ++i) {
-    const double mi = mix[i].mass, s = mix.sigma(k, i);
-    const SonineCollisionIntegrals c =
-        sonine2_pair_integrals(mix[i].density * s * s * rates.chi(k, i), mi / (mi + mk), rates.law().eps(k, i), Ak, T[i] / mi);
-    sum.C00 += c.C00, sum.C01 += c.C01, sum.C10 += c.C10, sum.C11 += c.C11;
+    const double mi = mix[i].mass, s = mix.sigma(k, i), eps = rates.law().eps(k, i);
+    const SonineCollisionIntegrals c = sonine2_pair_integrals(mix[i].density * s * s * rates.chi(k, i), mi / (mi + mk), eps, Ak, T[i] / mi);
+    sum.C.C00 += c.C00, sum.C.C01 += c.C01, sum.C.C10 += c.C10, sum.C.C11 += c.C11;
+    sum.xi += (2.0 / 3.0) * c.C00 * ((1.0 - eps) - (1.0 + eps) * mk * (T[i] - Tk) / ((mi + mk) * Tk));  // ν_ki = (2/3)C₀₀,ki
   }
   return sum;
+}
+
+SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T) {
+  return sonine2_tracer_sums(rates, k, T).C;
 }
 
 double sonine2_factor(const SonineCollisionIntegrals& C, double zeta) {
@@ -52,14 +56,17 @@ double sonine2_factor(const SonineCollisionIntegrals& C, double zeta) {
 double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* T) {
   // ζ = ξ_k: the tagged species' temperature T_k sets the scaling of its tracer problem, and T_k
   // decays at ξ_k (equal to the common ζ once settled).
-  return sonine2_factor(sonine2_collision_integrals(rates, k, T), rates.xi_species(k, T));
+  const SonineTracerSums s = sonine2_tracer_sums(rates, k, T);
+  return sonine2_factor(s.C, s.xi);
 }
 
 double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T) {
-  const double xi = rates.xi_species(k, T);
-  const double factor = sonine2_factor(sonine2_collision_integrals(rates, k, T), xi);
-  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1); no second-Sonine solution: the first-Sonine ν_k.
-  return 0.5 * xi + rates.inv_tau_v_species(k, T) / (std::isfinite(factor) ? factor : 1.0);
+  const SonineTracerSums s = sonine2_tracer_sums(rates, k, T);
+  const double factor = sonine2_factor(s.C, s.xi);
+  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1) with ν_k = (2/3)C₀₀: one pass over the partners.
+  // No second-Sonine solution: the first-Sonine ν_k.
+  const double inv_tau = (2.0 / 3.0) * s.C.C00 - 0.5 * s.xi;
+  return 0.5 * s.xi + inv_tau / (std::isfinite(factor) ? factor : 1.0);
 }
 
 }  // namespace granmix::theory

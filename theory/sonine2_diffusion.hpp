@@ -28,6 +28,14 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
 // need ε independent of the impact velocity; a viscoelastic law throws std::invalid_argument).
 SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T);
 
+// The same sums and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
+// ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], exactly 0 for ε = 1, T_i = T_k).
+struct SonineTracerSums {
+  SonineCollisionIntegrals C;
+  double xi = 0.0;
+};
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T);
+
 // D_k[2]/D_k[1] with the cooling rate zeta that scales the problem (the common ζ of the HCS).
 // NaN where the truncated problem has no diffusive solution: C₀₀ − ¾ζ ≤ 0 (ν_k ≤ ζ/2, no first-Sonine
 // D either: the Santos–Dufty regime of a large rare grain) or a non-positive second-Sonine denominator.

@@ -16,7 +16,6 @@
 #include <vector>
 
 #include "model/enskog.hpp"
-#include "theory/diffusion.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/sonine2_diffusion.hpp"
 #include "theory_fixtures.hpp"
@@ -277,7 +276,7 @@ TEST_CASE("sonine2: closed-form C_pq agree with a plain Monte Carlo (z < 4)", "[
     }
 }
 
-TEST_CASE("sonine2: C_00 = (3/2) nu and the identity tau_v^-1 = nu - xi/2 (physics-beyond §1)", "[theory]") {
+TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (physics-beyond §1), nu_eff from the library rates", "[theory]") {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 30; ++trial) {
@@ -297,6 +296,10 @@ TEST_CASE("sonine2: C_00 = (3/2) nu and the identity tau_v^-1 = nu - xi/2 (physi
         nu += nu_ki;
       }
       CHECK(sonine2_collision_integrals(r, k, T).C00 == Approx(1.5 * nu).epsilon(1e-13));
+      // The one-pass ξ_k and ν_eff against CollisionRates' own ξ_k and τ_v,k⁻¹.
+      const double xi = r.xi_species(k, T), factor = sonine2_factor(r, k, T);
+      CHECK(sonine2_tracer_sums(r, k, T).xi == Approx(xi).epsilon(1e-12).margin(1e-14 * nu));
+      CHECK(kinetic_velocity_decay_rate(r, k, T) == Approx(0.5 * xi + r.inv_tau_v_species(k, T) / factor).epsilon(1e-12));
     }
   }
 }
@@ -304,6 +307,12 @@ TEST_CASE("sonine2: C_00 = (3/2) nu and the identity tau_v^-1 = nu - xi/2 (physi
 TEST_CASE("sonine2: elastic Lorentz gas D[2]/D[1] = 13/12, elastic self-diffusion 59/58", "[theory]") {
   // Light tracer among infinitely heavy scatterers at rest (A_i = 0): a = 1, β = 2.
   CHECK(sonine2_factor(sonine2_pair_integrals(1.0, 1.0, 1.0, 1.0, 0.0), 0.0) == Approx(13.0 / 12).epsilon(1e-15));
+  // Elastic, equal temperatures (A_k m_k = A_i m_i, so a = μ): the collision operator is self-adjoint
+  // in the Maxwellian weight, so C₀₁ = C₁₀ for every mass ratio (inelastic or T_i ≠ T_k they differ).
+  for (double mu : {0.01, 0.3, 0.5, 0.9, 0.999}) {
+    const SonineCollisionIntegrals c = sonine2_pair_integrals(1.0, mu, 1.0, mu, 1.0 - mu);
+    CHECK(c.C10 == Approx(c.C01).epsilon(1e-13));
+  }
   // The same through the mixture: scatterers of mass 1e12, equal temperatures, a tracer density of 1e-20.
   const CollisionRates lorentz = test::constant_rates({{1, 1, 1e-20}, {1e12, 1, 1}}, 1.0);
   const double T2[2] = {1.0, 1.0};
