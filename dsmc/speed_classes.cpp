@@ -12,13 +12,14 @@ namespace {
 constexpr double class_ratio = 0.6;
 }  // namespace
 
-SpeedClasses::SpeedClasses(Particles& p, std::size_t classes) : C_(classes), off_(p.species() * classes + 1), bound_(p.species() * classes) {
+SpeedClasses::SpeedClasses(Particles& p, std::size_t classes)
+    : C_(classes), off_(p.species() * classes + 1), bound_(p.species() * classes), weight_(p.species() * classes), species_weight_(p.species()) {
   refresh(p);
 }
 
 void SpeedClasses::refresh(Particles& p) {
   std::vector<Vec3> v;
-  std::vector<Particles::Flight> f;
+  std::vector<Vec3> f;
   std::vector<std::size_t> cls, fill(C_);
   for (std::size_t k = 0; k < p.species(); ++k) {
     const std::size_t u0 = k * C_, n = p.count(k), b = p.begin(k);
@@ -46,6 +47,7 @@ void SpeedClasses::refresh(Particles& p) {
     }
   }
   off_[p.species() * C_] = p.size();
+  for (std::size_t k = 0; k < p.species(); ++k) update_weights(k);
 }
 
 }  // namespace granmix::dsmc
