@@ -38,6 +38,8 @@ struct Proposal {
 // u ∝ N_u bound_u by SpeedClasses::pick (the tree keeps M leaves instead of M·C: fewer levels and a
 // quarter of the cache). After a collision the event loop reports each particle's new speed through
 // moved(); it returns true when the selector's state (weights, bounds, particle order) changed.
+// propose() is forced inline into the event loop: out of line it cost 2% more instructions per
+// trial (callgrind, 691 species).
 
 // Ordered pair (a, b) of the class u and species k: a uniform in u, b uniform in k (one random word;
 // species hold fewer than 2^32 particles: ensemble.cpp refuses more).
@@ -55,7 +57,7 @@ class DirectSelector {
     refresh_weights(p);
   }
   double total_rate() const { return std::numbers::pi / pairs_.volume * tree_.total(); }
-  Proposal propose(Rng& rng, const Particles& p) const {
+  [[gnu::always_inline]] Proposal propose(Rng& rng, const Particles& p) const {
     const std::size_t cell = tree_.sample(rng.uniform()), i = cell >> shift_, k = cell & ((std::size_t(1) << shift_) - 1);
     const std::size_t u = cls_.pick(i, rng.uniform() * cls_.weight(i));
     const auto [a, b] = pick_pair(rng, cls_, u, p, k);
@@ -108,7 +110,7 @@ class LowRankSelector {
     refresh_weights();
   }
   double total_rate() const { return std::numbers::pi * pairs_.chi_max / (4.0 * pairs_.volume) * tree_.total(); }
-  Proposal propose(Rng& rng, const Particles& p) const {
+  [[gnu::always_inline]] Proposal propose(Rng& rng, const Particles& p) const {
     const std::size_t i = tree_.sample(rng.uniform()), u = cls_.pick(i, rng.uniform() * cls_.weight(i));
     const double s = pairs_.sigma[i], t0 = s * s * S_[0], t1 = 2.0 * s * S_[1];
     const double x = rng.uniform() * (t0 + t1 + S_[2]);
@@ -166,7 +168,7 @@ class BirdSelector {
     refresh_weights();
   }
   double total_rate() const { return std::numbers::pi / pairs_.volume * pairs_.sigma2_max * pairs_.chi_max * n_ * tree_.total(); }
-  Proposal propose(Rng& rng, const Particles& p) const {
+  [[gnu::always_inline]] Proposal propose(Rng& rng, const Particles& p) const {
     const std::size_t i = tree_.sample(rng.uniform()), u = cls_.pick(i, rng.uniform() * cls_.weight(i)), k = k_.sample(rng.uniform());
     const auto [a, b] = pick_pair(rng, cls_, u, p, k);
     return {a, b, i, k, pairs_.sigma2_max * pairs_.chi_max * (cls_.bound(u) + cls_.bound(cls_.unit_of(b, k))),
@@ -212,7 +214,7 @@ class GlobalBirdSelector {
     const double N = double(n_);
     return std::numbers::pi / pairs_.volume * N * N * pairs_.sigma2_max * pairs_.chi_max * vmax_;
   }
-  Proposal propose(Rng& rng, const Particles& p) const {
+  [[gnu::always_inline]] Proposal propose(Rng& rng, const Particles& p) const {
     const std::size_t a = rng.below(n_), b = rng.below(n_);
     const std::size_t i = species_of(a, p), k = species_of(b, p);
     return {a, b, i, k, pairs_.sigma2_max * pairs_.chi_max * 2.0 * vmax_, pairs_.sigma2(i, k) * pairs_.chi(i, k)};

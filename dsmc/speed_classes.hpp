@@ -78,7 +78,7 @@ class SpeedClasses {
     return true;
   }
   // New bounds from the current maximum speed of each species and every particle put in its class
-  // (counting sort per species, O(N)); the selector then recomputes all its weights.
+  // (an in-place counting sort per species, O(N)); the selector then recomputes all its weights.
   void refresh(Particles& p);
 
  private:
