@@ -127,6 +127,10 @@ class EventLoop {
     has_next_ = true;
     __builtin_prefetch(&p_.v[next_.a]);
     __builtin_prefetch(&p_.v[next_.b]);
+    if (p_.track_displacement) {  // the flight intercepts are written if the pair collides
+      __builtin_prefetch(&p_.flight[next_.a]);
+      __builtin_prefetch(&p_.flight[next_.b]);
+    }
   }
 
   // Kinetic energy that the particles of species 1 in proposal q carry.
