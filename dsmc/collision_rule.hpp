@@ -6,22 +6,20 @@
 
 namespace granmix::dsmc {
 
-inline void collide(Particles& p, std::size_t a, std::size_t b, double ma, double mb, double eps, const Vec3& e,
-                    double g_dot_e) {
+// At time t. With displacements (v1 Eq. 15), each flight intercept R0 = R − v t changes by −Δv t, so
+// that R(t) = R0 + v t is continuous through the collision (particles.hpp).
+inline void collide(Particles& p, std::size_t a, std::size_t b, double ma, double mb, double eps, const Vec3& e, double g_dot_e,
+                    double t) {
   const double impulse = (1.0 + eps) * g_dot_e / (ma + mb);  // J / (m_a m_b) with J = m_eff (1+ε) g·e
   const double da = mb * impulse, db = ma * impulse;
   Vec3 &va = p.v[a], &vb = p.v[b];
   va.x -= da * e.x, va.y -= da * e.y, va.z -= da * e.z;
   vb.x += db * e.x, vb.y += db * e.y, vb.z += db * e.z;
-}
-
-// v1 Eq. (15): before a particle's velocity changes, its free flight since the last collision is
-// added to its displacement.
-inline void advance_displacement(Particles& p, std::size_t a, double t) {
-  Particles::Flight& f = p.flight[a];
-  const double dt = t - f.t_last;
-  f.r.x += p.v[a].x * dt, f.r.y += p.v[a].y * dt, f.r.z += p.v[a].z * dt;
-  f.t_last = t;
+  if (!p.track_displacement) return;
+  const double ra = da * t, rb = db * t;
+  Vec3 &r0a = p.flight[a], &r0b = p.flight[b];
+  r0a.x += ra * e.x, r0a.y += ra * e.y, r0a.z += ra * e.z;
+  r0b.x -= rb * e.x, r0b.y -= rb * e.y, r0b.z -= rb * e.z;
 }
 
 }  // namespace granmix::dsmc

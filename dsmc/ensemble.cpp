@@ -17,11 +17,12 @@
 namespace granmix::dsmc {
 
 namespace {
-constexpr model::EnumNames<Method, 5> method_names = {{{Method::automatic, "auto"},
+constexpr model::EnumNames<Method, 6> method_names = {{{Method::automatic, "auto"},
                                                         {Method::direct, "direct"},
                                                         {Method::lowrank, "lowrank"},
                                                         {Method::bird, "bird"},
-                                                        {Method::timestep, "timestep"}}};
+                                                        {Method::timestep, "timestep"},
+                                                        {Method::bird_global, "bird-global"}}};
 }  // namespace
 
 Method parse_method(const std::string& name) { return model::parse_enum(method_names, name, "DSMC method"); }
@@ -260,6 +261,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
         case Method::direct: recs[r] = run_replica<DirectSelector>(s, pairs, r); break;
         case Method::lowrank: recs[r] = run_replica<LowRankSelector>(s, pairs, r); break;
         case Method::timestep: recs[r] = run_time_step_replica(s, pairs, r); break;
+        case Method::bird_global: recs[r] = run_replica<GlobalBirdSelector>(s, pairs, r); break;
         default: recs[r] = run_replica<BirdSelector>(s, pairs, r); break;
       }
     } catch (...) {

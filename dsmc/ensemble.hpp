@@ -15,7 +15,7 @@
 
 namespace granmix::dsmc {
 
-enum class Method { automatic, direct, lowrank, bird, timestep };
+enum class Method { automatic, direct, lowrank, bird, timestep, bird_global };
 Method parse_method(const std::string& name);  // throws std::invalid_argument
 const char* to_string(Method m);
 

@@ -40,7 +40,7 @@ class EventLoop {
   // refresh_every accepted collisions, so that the acceptance does not decay as the gas cools.
   EventLoop(Particles& p, Selector& sel, const model::Restitution& law, Rng& rng, Counters& c, std::uint64_t refresh_every)
       : p_(p), sel_(sel), law_(law), rng_(rng), c_(c), refresh_every_(refresh_every), energy_(kinetic_energy(p)),
-        e1_(species_energy(p, 0)), e1_start_(e1_) {
+        e1_(species_energy(p, 0)), e1_start_(e1_), inverse_rate_(1.0 / sel.total_rate()) {
     c_.reset(p.species());
   }
 
@@ -62,15 +62,16 @@ class EventLoop {
   void reset_clock() {
     t_ = 0.0;
     ts_ = 0.0, t_e1_ = 0.0, e1_start_ = e1_;
-    if (p_.track_displacement)
-      std::fill(p_.flight.begin(), p_.flight.end(), Particles::Flight{{0, 0, 0}, 0.0});
+    if (p_.track_displacement) std::fill(p_.flight.begin(), p_.flight.end(), Vec3{0, 0, 0});  // R = R0 + v·0 = 0
     c_.reset(p_.species());
   }
 
  private:
   void advance(double t_stop, double energy_stop) {
     while (energy_ > energy_stop) {
-      const double t_next = t_ + rng_.exponential(sel_.total_rate());
+      // The total rate changes only with the selector's state, so 1/rate is kept (no division per
+      // trial) and the waiting time is a ziggurat exponential (no log per trial).
+      const double t_next = t_ + rng_.standard_exponential() * inverse_rate_;
       if (!(t_next < t_stop)) {
         t_ = t_stop;
         return;
@@ -85,16 +86,17 @@ class EventLoop {
       draw_next();
       if (q.a == q.b) continue;  // a particle with itself: zero true rate
       const Vec3 g = p_.v[q.a] - p_.v[q.b];
-      const double gn = std::sqrt(norm2(g));
-      if (!(rng_.uniform() * q.scale < gn)) continue;
-      const Vec3 e = rng_.hemisphere({g.x / gn, g.y / gn, g.z / gn});
+      const double g2 = norm2(g), x = rng_.uniform() * q.scale;
+      // u·scale < weight·|g| compared squared (both sides >= 0): no square root on a rejection.
+      if (!(x * x < q.weight * q.weight * g2)) continue;
+      const double gn = std::sqrt(g2), inv = 1.0 / gn;
+      const Vec3 e = rng_.hemisphere({g.x * inv, g.y * inv, g.z * inv});
       const double g_dot_e = g.x * e.x + g.y * e.y + g.z * e.z;
       const double eps = law_.eps_at(q.i, q.k, g_dot_e);
       const double ma = p_.mass[q.i], mb = p_.mass[q.k];
-      if (p_.track_displacement) advance_displacement(p_, q.a, t_), advance_displacement(p_, q.b, t_);
       const bool species1 = q.i == 0 || q.k == 0;
       if (species1) ts_ = rescaled_time(), t_e1_ = t_, e1_ -= species1_energy(q);
-      collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e);
+      collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e, t_);
       if (species1) e1_ += species1_energy(q);
       energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
       c_.count(q.i, q.k);
@@ -102,10 +104,10 @@ class EventLoop {
       const bool moved_a = sel_.moved(q.a, q.i, b, p_);
       std::size_t unused = p_.size();
       const bool moved_b = sel_.moved(b, q.k, unused, p_);
-      if (moved_a || moved_b) draw_next();
+      if (moved_a || moved_b) selector_changed();
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
-        draw_next();
+        selector_changed();
         energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
         e1_ = species_energy(p_, 0);
         since_refresh_ = 0;
@@ -114,11 +116,21 @@ class EventLoop {
     }
   }
 
+  // The selector's weights changed: the drawn-ahead proposal and the kept 1/rate are stale.
+  void selector_changed() {
+    inverse_rate_ = 1.0 / sel_.total_rate();
+    draw_next();
+  }
+
   void draw_next() {
     next_ = sel_.propose(rng_, p_);
     has_next_ = true;
     __builtin_prefetch(&p_.v[next_.a]);
     __builtin_prefetch(&p_.v[next_.b]);
+    if (p_.track_displacement) {  // the flight intercepts are written if the pair collides
+      __builtin_prefetch(&p_.flight[next_.a]);
+      __builtin_prefetch(&p_.flight[next_.b]);
+    }
   }
 
   // Kinetic energy that the particles of species 1 in proposal q carry.
@@ -137,6 +149,7 @@ class EventLoop {
   double energy_;
   double e1_, e1_start_;           // kinetic energy of species 1, now and at the clock's start
   double ts_ = 0.0, t_e1_ = 0.0;  // t_s accumulated up to t_e1_, the last change of e1_
+  double inverse_rate_;            // 1 / sel_.total_rate(), renewed by selector_changed()
   Proposal next_{};               // the next trial's pair, drawn one trial ahead (has_next_)
   bool has_next_ = false;
 };

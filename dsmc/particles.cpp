@@ -16,6 +16,9 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
   p.offset.assign(1, 0);
   for (std::size_t k = 0; k < M; ++k) {
     if (counts[k] == 0) throw std::invalid_argument("particles: species " + std::to_string(k + 1) + " has no particles");
+    // Selectors draw a particle of a species with 32-bit random integers (Rng::below_pair).
+    if (counts[k] > 0xffffffffu)
+      throw std::invalid_argument("particles: species " + std::to_string(k + 1) + " has more than 2^32 - 1 particles (the limit per species)");
     p.offset.push_back(p.offset.back() + counts[k]);
     p.mass.push_back(mix[k].mass);
   }
@@ -59,7 +62,7 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
       p.v[j] = {u.x + f * p.v[j].x, u.y + f * p.v[j].y, u.z + f * p.v[j].z};
   }
   p.track_displacement = track_displacement;
-  if (track_displacement) p.flight.assign(N, Particles::Flight{{0, 0, 0}, 0.0});
+  if (track_displacement) p.flight.assign(N, Vec3{0, 0, 0});
   return p;
 }
 

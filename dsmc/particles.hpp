@@ -1,9 +1,12 @@
 #pragma once
 // Particles grouped by species: species k owns indices [begin(k), end(k)). Each particle's velocity
 // is one packed record (24 bytes), so a proposed pair costs two cache lines, not six (the velocity
-// loads were the largest cost of the loop in perf). Displacements R with the last-collision time
-// (one 32-byte record) exist only when an MSD is asked for (v1 Eq. 15: R is advanced lazily at a
-// particle's collisions). Memory: 24 bytes per particle, 56 with displacements.
+// loads were the largest cost of the loop in perf). Displacements exist only when an MSD is asked
+// for, as the intercept R0 = R(t) − v t of the current free flight (v1 Eq. 15 with the
+// last-collision time folded in: R(t) = R0 + v t, and a collision at t that changes v by Δv changes
+// R0 by −Δv t), one 24-byte record. Memory: 24 bytes per particle, 48 with displacements (was 56
+// with R and t_last stored). R0 loses no precision where it matters: in a cooling gas v t stays of
+// the order of the displacement (v ∝ 1/t), in an elastic one the rounding of v t is 1e-16 t.
 #include <cstddef>
 #include <vector>
 
@@ -17,16 +20,12 @@ struct Particles {
   std::vector<double> mass;         // per species
   std::vector<Vec3> v;
   bool track_displacement = false;
-  struct Flight {
-    Vec3 r;         // displacement up to t_last
-    double t_last;  // time of the last collision
-  };
-  std::vector<Flight> flight;
+  std::vector<Vec3> flight;  // R0 = R(t) − v t per particle (when track_displacement)
 
   std::size_t species() const { return mass.size(); }
   std::size_t size() const { return v.size(); }
   // Memory of one particle's records (the per-species tables are O(M), not O(N)).
-  static std::size_t bytes_per_particle(bool with_displacement) { return sizeof(Vec3) + (with_displacement ? sizeof(Flight) : 0); }
+  static std::size_t bytes_per_particle(bool with_displacement) { return sizeof(Vec3) * (with_displacement ? 2 : 1); }
   std::size_t count(std::size_t k) const { return offset[k + 1] - offset[k]; }
   std::size_t begin(std::size_t k) const { return offset[k]; }
   std::size_t end(std::size_t k) const { return offset[k + 1]; }
@@ -39,10 +38,8 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
 
 // Displacement of particle a at time t without touching the state (v1 Eq. 15).
 inline Vec3 displacement(const Particles& p, std::size_t a, double t) {
-  const Particles::Flight& f = p.flight[a];
-  const Vec3& v = p.v[a];
-  const double dt = t - f.t_last;
-  return {f.r.x + v.x * dt, f.r.y + v.y * dt, f.r.z + v.z * dt};
+  const Vec3 &r0 = p.flight[a], &v = p.v[a];
+  return {r0.x + v.x * t, r0.y + v.y * t, r0.z + v.z * t};
 }
 
 // T_k = m_k ⟨v²⟩ / 3 of one species; kinetic energies Σ m v²/2 of one species and of all.

@@ -6,8 +6,10 @@
 #include <pcg_random.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 
 namespace granmix::dsmc {
 
@@ -17,6 +19,19 @@ struct Vec3 {
 
 inline double norm2(const Vec3& v) { return v.x * v.x + v.y * v.y + v.z * v.z; }
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+
+// Ziggurat tables of e^{-x} (Marsaglia & Tsang 2000): 256 layers of equal area V, x[1] = r the start of
+// the tail, x[0] = V / f(r) the base layer's pseudo-width, x[256] = 0, f = e^{-x}.
+struct ExpZiggurat {
+  double x[257], f[257];
+  ExpZiggurat() {
+    const double r = 7.69711747013104972, V = 0.0039496598225815571993;
+    x[0] = V / std::exp(-r), x[1] = r, x[256] = 0.0;
+    for (int i = 2; i < 256; ++i) x[i] = -std::log(V / x[i - 1] + std::exp(-x[i - 1]));
+    for (int i = 0; i < 257; ++i) f[i] = std::exp(-x[i]);
+  }
+};
+inline const ExpZiggurat exp_ziggurat{};
 
 class Rng {
  public:
@@ -34,6 +49,14 @@ class Rng {
       if (low >= n || low >= (-n) % n) return static_cast<std::uint64_t>(m >> 64);
     }
   }
+  // Two uniform integers in [0, n1) and [0, n2) (n < 2^32) from the two halves of one 64-bit word, by
+  // Lemire's multiply-shift on 32 bits each (a half in the rejection zone is redrawn alone: the
+  // halves are independent, so the pair stays unbiased). One draw and two 32-bit products instead
+  // of two draws and two 128-bit products per proposed pair.
+  std::pair<std::uint32_t, std::uint32_t> below_pair(std::uint32_t n1, std::uint32_t n2) {
+    const std::uint64_t w = gen_();
+    return {below32(static_cast<std::uint32_t>(w), n1), below32(static_cast<std::uint32_t>(w >> 32), n2)};
+  }
   // Standard normal, Marsaglia's polar method (no cached second value: simpler to reproduce).
   double normal() {
     for (;;) {
@@ -43,6 +66,20 @@ class Rng {
   }
   // Exponential waiting time of a Poisson process of the given rate.
   double exponential(double rate) { return -std::log(uniform_open0()) / rate; }
+  // Exponential of mean 1 by Marsaglia & Tsang's ziggurat (J. Stat. Softw. 5(8), 2000), 256 layers:
+  // 98.9% of draws cost one random word, two table loads and a multiply, without the log that was
+  // 5% of the event loop in perf. Layer i: the low 8 bits; the point in it: the high 53 bits.
+  double standard_exponential() {
+    const ExpZiggurat& z = exp_ziggurat;
+    for (;;) {
+      const std::uint64_t bits = gen_();
+      const std::size_t i = bits & 0xff;
+      const double x = static_cast<double>(bits >> 11) * 0x1.0p-53 * z.x[i];
+      if (x < z.x[i + 1]) return x;                                // inside the layer's rectangle
+      if (i == 0) return z.x[1] - std::log(uniform_open0());        // the tail beyond r: r + Exp(1)
+      if (z.f[i + 1] + (z.f[i] - z.f[i + 1]) * uniform() < std::exp(-x)) return x;  // the wedge
+    }
+  }
 
   // Unit vector uniform on the sphere (Archimedes: z uniform in [-1, 1]).
   Vec3 unit_vector() {
@@ -70,6 +107,14 @@ class Rng {
   }
 
  private:
+  std::uint32_t below32(std::uint32_t x, std::uint32_t n) {
+    for (;;) {
+      const std::uint64_t m = static_cast<std::uint64_t>(x) * n;
+      const auto low = static_cast<std::uint32_t>(m);
+      if (low >= n || low >= static_cast<std::uint32_t>(-n) % n) return static_cast<std::uint32_t>(m >> 32);
+      x = static_cast<std::uint32_t>(gen_());
+    }
+  }
   pcg64 gen_;
 };
 

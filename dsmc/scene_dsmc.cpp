@@ -180,7 +180,7 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
   d.method = parse_method(s.dsmc.method);
   d.time_step_factor = s.dsmc.time_step;
   if (d.method == Method::timestep && d.aged)
-    throw InputError(s.file + ": dsmc.method = \"timestep\" has no aged start (allowed: auto, direct, lowrank, bird)");
+    throw InputError(s.file + ": dsmc.method = \"timestep\" has no aged start (allowed: auto, direct, lowrank, bird, bird-global)");
   d.msd = s.observables.needs_msd();
   const bool settled_distribution = s.observables.distribution_settled;
   d.cumulant = s.observables.cumulant || settled_distribution;  // Δ_k needs the simulation's c_k

@@ -35,18 +35,38 @@ class SpeedClasses {
     while (a < off_[u]) --u;
     return u;
   }
+  // Σ_c N_u bound_u over the classes of species k: the species' weight in a two-level selection
+  // (species from a tree over M leaves, then its class by pick()), so the tree keeps M leaves, not M·C.
+  // Kept with the class weights N_u bound_u, renewed when a count or bound changes (callgrind: computing
+  // them per proposal was a fifth of its instructions).
+  double weight(std::size_t k) const { return species_weight_[k]; }
+  // The class of species k with probability N_u bound_u / weight(k), for x uniform in [0, weight(k)).
+  // The top class is never empty while weight(k) > 0 (it holds the fastest particle and only gains
+  // between refreshes), so it takes x that rounding pushed past the last sum.
+  std::size_t pick(std::size_t k, double x) const {
+    const std::size_t top = k * C_ + C_ - 1;
+    for (std::size_t u = k * C_; u < top; ++u) {
+      if (x < weight_[u]) return u;
+      x -= weight_[u];
+    }
+    return top;
+  }
   // Particle a of species k changed speed: if it exceeds its class bound, move it up to the class of
-  // its speed (raising the top bound if it exceeds that). `other` is an index the caller holds; it is kept pointing at the same particle
-  // through the swaps. Returns the units whose count or bound changed (at most two), via `changed`.
-  template <class F>
-  void moved(Particles& p, std::size_t a, std::size_t k, std::size_t& other, F&& changed) {
+  // its speed (raising the top bound if it exceeds that). `other` is an index the caller holds; it is
+  // kept pointing at the same particle through the swaps. Returns true when a count or bound of
+  // species k changed (its weight must then be recomputed).
+  bool moved(Particles& p, std::size_t a, std::size_t k, std::size_t& other) {
     const double s = std::sqrt(norm2(p.v[a]));
     const std::size_t from = unit_of(a, k), top = k * C_ + C_ - 1;
-    if (s > bound_[top]) bound_[top] = s, changed(top);
+    bool changed = false;
+    if (s > bound_[top]) bound_[top] = s, changed = true;
     // Only upwards: a particle that slowed down still satisfies its class bound, and leaving it
     // there saves the swaps (random memory accesses) on half the collisions; refresh() re-sorts all
     // particles every N collisions, about two per particle.
-    if (s <= bound_[from]) return;
+    if (s <= bound_[from]) {
+      if (changed) update_weights(k);
+      return changed;
+    }
     std::size_t to = from;
     while (s > bound_[to]) ++to;
     for (std::size_t u = from; u < to; ++u) {  // to the end of class u, which then shrinks by one
@@ -54,13 +74,19 @@ class SpeedClasses {
       swap(p, a, last, other);
       a = last, --off_[u + 1];
     }
-    changed(from), changed(to);  // classes in between gained one and lost one
+    update_weights(k);
+    return true;
   }
   // New bounds from the current maximum speed of each species and every particle put in its class
-  // (counting sort per species, O(N)); the selector then recomputes all its weights.
+  // (an in-place counting sort per species, O(N)); the selector then recomputes all its weights.
   void refresh(Particles& p);
 
  private:
+  void update_weights(std::size_t k) {
+    double w = 0.0;
+    for (std::size_t u = k * C_; u < k * C_ + C_; ++u) w += weight_[u] = double(count(u)) * bound_[u];
+    species_weight_[k] = w;
+  }
   static void swap(Particles& p, std::size_t x, std::size_t y, std::size_t& other) {
     if (x == y) return;
     std::swap(p.v[x], p.v[y]);
@@ -71,6 +97,8 @@ class SpeedClasses {
   std::size_t C_;
   std::vector<std::size_t> off_;  // M·C + 1 offsets
   std::vector<double> bound_;     // M·C bounds
+  std::vector<double> weight_;    // M·C class weights N_u bound_u
+  std::vector<double> species_weight_;  // M sums of the class weights
 };
 
 }  // namespace granmix::dsmc

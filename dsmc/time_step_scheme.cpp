@@ -47,8 +47,7 @@ void TimeStepScheme::step(double dt) {
         const double ge = g.x * u.x + g.y * u.y + g.z * u.z;
         if (!(ge > 0.0) || !(rng_.uniform() * (vmax[i] + vmax[j]) < ge)) continue;  // Θ(g·σ̂) ω/ω_max
         const double eps = law_.eps_at(i, j, ge);
-        if (p_.track_displacement) advance_displacement(p_, a, t_mid), advance_displacement(p_, b, t_mid);
-        collide(p_, a, b, p_.mass[i], p_.mass[j], eps, u, ge);
+        collide(p_, a, b, p_.mass[i], p_.mass[j], eps, u, ge, t_mid);
         c_.count(i, j);
       }
     }

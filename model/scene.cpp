@@ -267,7 +267,7 @@ DsmcFidelity read_fidelity(TomlFields& f, const std::string& key) {
 DsmcSettings read_dsmc(TomlFields& f) {
   DsmcSettings d;
   d.present = true;
-  d.method = f.choice("method", {"auto", "direct", "lowrank", "bird", "timestep"}, "auto");
+  d.method = f.choice("method", {"auto", "direct", "lowrank", "bird", "bird-global", "timestep"}, "auto");
   // In units of the 1–1 mean free time λ11/v01(t); 10 is already a huge step (tests/dsmc).
   d.time_step = f.number("time_step", 1e-6, 10.0, 3e-3);
   d.rescale = f.flag("rescale", true);

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <vector>
+#include <algorithm>
 
 #include "dsmc/collision_rule.hpp"
 #include "dsmc/particles.hpp"
@@ -40,7 +42,7 @@ TEST_CASE("one collision: momentum to 1e-13 and the energy loss (1-eps^2) m_eff 
         return 0.5 * norm2(p.v[0]) + 0.5 * mb * norm2(p.v[1]);
       };
       const double P[3] = {momentum(0), momentum(1), momentum(2)}, E = energy();
-      collide(p, 0, 1, 1.0, mb, eps, e, ge);
+      collide(p, 0, 1, 1.0, mb, eps, e, ge, 0.0);
       // Rounding of a few operations on numbers of size mb|v|: 1e-13 relative.
       for (int c = 0; c < 3; ++c) CHECK(std::abs(momentum(c) - P[c]) <= 1e-13 * (1 + mb));
       const double meff = mb / (1 + mb);
@@ -86,6 +88,33 @@ TEST_CASE("normal draws and bounded integers", "[dsmc]") {
   double chi2 = 0;
   for (int b : bins) chi2 += std::pow(b - N / 7.0, 2) / (N / 7.0);
   CHECK(chi2 < 22.5);  // χ² with 6 degrees of freedom: P(> 22.5) = 1e-3
+}
+
+TEST_CASE("ziggurat exponential: chi2 over 20 equal-probability bins and the tail beyond r - mean and variance 1", "[dsmc]") {
+  Rng rng(11, 0);
+  const int N = 2000000, B = 20;
+  const double r = exp_ziggurat.x[1];  // the ziggurat's tail start, 7.697: its own code path
+  std::vector<double> hits(B + 1, 0.0), p(B + 1);
+  double s = 0, s2 = 0;
+  int negative = 0;
+  for (int j = 0; j < N; ++j) {
+    const double x = rng.standard_exponential();
+    negative += x < 0.0;
+    s += x, s2 += x * x;
+    // Bin b < B: [-ln(1 - b/B), -ln(1 - (b+1)/B)) (the last one ends at r); bin B: [r, ∞).
+    const auto b = static_cast<std::size_t>(B * (1.0 - std::exp(-x)));
+    ++hits[x >= r ? B : std::min<std::size_t>(b, B - 1)];
+  }
+  for (int b = 0; b < B; ++b) p[b] = 1.0 / B;
+  p[B - 1] -= std::exp(-r), p[B] = std::exp(-r);
+  double chi2 = 0;
+  for (int b = 0; b <= B; ++b) chi2 += std::pow(hits[b] - N * p[b], 2) / (N * p[b]);
+  std::printf("ziggurat exponential: chi2 = %.1f (20 dof), tail %g of %g expected, mean %.5f\n", chi2, hits[B], N * p[B], s / N);
+  CHECK(negative == 0);
+  CHECK(chi2 < 45.3);  // χ² with 20 degrees of freedom: P(> 45.3) = 1e-3
+  // Mean 1 (sd 1/√N) and second moment 2 (sd √(20/N): E x⁴ = 24): z bound 4.
+  CHECK(std::abs(s / N - 1) < 4 / std::sqrt(double(N)));
+  CHECK(std::abs(s2 / N - 2) < 4 * std::sqrt(20.0 / N));
 }
 
 TEST_CASE("streams: same (seed - replica) repeat - different ones differ", "[dsmc]") {
