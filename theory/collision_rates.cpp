@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -14,24 +15,38 @@ CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::
   const std::size_t N = mix_.size();
   // The rates are sums over all N² pairs (v1 Eqs. 20, 23) with a table of pair constants: refuse
   // what would not fit rather than fail in the allocator or run for hours.
-  if (double(N) * double(N) * sizeof(Pair) > max_pair_table_bytes)
-    throw std::invalid_argument(fmt::format("theory: {} species need a pair table of {:.1f} GB (N² × {} bytes); the limit is {:.0f} GB, "
-                                            "about {} species", N, double(N) * double(N) * sizeof(Pair) / 1e9, sizeof(Pair),
-                                            max_pair_table_bytes / 1e9, std::size_t(std::sqrt(max_pair_table_bytes / sizeof(Pair)))));
+  const double links = 0.5 * double(N) * double(N + 1);
+  if (links * link_bytes > max_pair_table_bytes)
+    throw std::invalid_argument(fmt::format("theory: {} species need a pair table of {:.1f} GB (N(N+1)/2 × {} bytes); the limit is {:.0f} GB, "
+                                            "about {} species", N, links * link_bytes / 1e9, link_bytes, max_pair_table_bytes / 1e9,
+                                            std::size_t(std::sqrt(2.0 * max_pair_table_bytes / link_bytes))));
   if (law_.size() != N || chi_.size() != N)
     throw std::invalid_argument("collision rates: restitution and χ must have one row per species");
   if (method_ == MomentMethod::automatic)
     method_ = (law_.is_viscoelastic() && law_.form() != model::ViscoelasticForm::series) ? MomentMethod::quadrature
                                                                                          : MomentMethod::series;
   const double c = 4.0 / 3.0 * std::sqrt(2.0 * std::numbers::pi);
-  pairs_.resize(N * N);
+  for (std::size_t k = 0; k < N; ++k) inv_m_.push_back(1.0 / mix_[k].mass);
+  for (std::vector<double>* v : {&links_.pref_ki, &links_.pref_ik, &links_.mu_ki, &links_.mu_ik, &links_.W2, &links_.D})
+    v->reserve(std::size_t(links));
   for (std::size_t k = 0; k < N; ++k)
-    for (std::size_t i = 0; i < N; ++i) {
+    for (std::size_t i = k; i < N; ++i) {
       const double s = mix_.sigma(k, i);
       const double mk = mix_[k].mass, mi = mix_[i].mass;
-      pairs_[k * N + i] = {c * mix_[i].density * s * s * chi_[k][i], mi / (mi + mk), mk / (mi + mk), 1.0 / mk, 1.0 / mi,
-                           law_.is_viscoelastic() ? CollisionMoments{} : constant_moments(law_.eps(k, i))};
+      const CollisionMoments W = law_.is_viscoelastic() ? CollisionMoments{} : constant_moments(law_.eps(k, i));
+      links_.pref_ki.push_back(c * mix_[i].density * s * s * chi_[k][i]);
+      links_.pref_ik.push_back(c * mix_[k].density * s * s * chi_[i][k]);
+      links_.mu_ki.push_back(mi / (mi + mk));
+      links_.mu_ik.push_back(mk / (mi + mk));
+      links_.W2.push_back(W.W2);
+      links_.D.push_back(W.D);
     }
+}
+
+CollisionRates::Pair CollisionRates::pair(std::size_t k, std::size_t i) const {
+  const std::size_t j = link_index(std::min(k, i), std::max(k, i));
+  if (k <= i) return {links_.pref_ki[j], links_.mu_ki[j], links_.mu_ik[j], inv_m_[k], inv_m_[i]};
+  return {links_.pref_ik[j], links_.mu_ik[j], links_.mu_ki[j], inv_m_[k], inv_m_[i]};
 }
 
 CollisionMoments CollisionRates::moments(std::size_t k, std::size_t i, double V) const {
@@ -41,14 +56,15 @@ CollisionMoments CollisionRates::moments(std::size_t k, std::size_t i, double V)
 }
 
 double CollisionRates::xi(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  const Pair& p = pair(k, i);
-  return xi_formula(p, std::sqrt(Tk * p.inv_mk + Ti * p.inv_mi), Tk, Ti, moments(k, i, Tk * p.inv_mk + Ti * p.inv_mi));
+  const Pair p = pair(k, i);
+  const double V = Tk * p.inv_mk + Ti * p.inv_mi;
+  return xi_formula(p.prefactor, p.mu, p.mu_k, std::sqrt(V), Tk, Ti, moments(k, i, V));
 }
 
 double CollisionRates::inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const {
-  const Pair& p = pair(k, i);
+  const Pair p = pair(k, i);
   const double V = Tk * p.inv_mk + Ti * p.inv_mi;
-  return inv_tau_formula(p, std::sqrt(V), Tk, Ti, moments(k, i, V));
+  return inv_tau_formula(p.prefactor, p.mu, p.mu_k, std::sqrt(V), Tk, Ti, moments(k, i, V));
 }
 
 double CollisionRates::xi_species(std::size_t k, const double* T) const {
@@ -63,36 +79,96 @@ double CollisionRates::inv_tau_v_species(std::size_t k, const double* T) const {
   return sum;
 }
 
-template <class F>
-void CollisionRates::symmetric_sum(const double* T, double* out, F f) const {
-  const std::size_t N = mix_.size();
-  for (std::size_t k = 0; k < N; ++k) out[k] = 0.0;
+namespace {
+
+// The loop of CollisionRates::symmetric_sums for the requested outputs (compile-time flags). Row k
+// starts with the contributions of the rows before it and adds its own terms i = k … N−1 in order,
+// so each sum runs over i = 0 … N−1 exactly as a per-species loop would (same numbers).
+template <bool with_xi, bool with_tau, class Links, class XiF, class TauF>
+void pair_pass(std::size_t N, const double* __restrict T, const double* __restrict inv_m, const Links& L,
+               double* __restrict xi, double* __restrict inv_tau, XiF xi_f, TauF tau_f) {
   for (std::size_t k = 0; k < N; ++k) {
-    const double Tk = T[k];
-    for (std::size_t i = k; i < N; ++i) {
-      const Pair& a = pairs_[k * N + i];
-      const double Ti = T[i], sqrtV = std::sqrt(Tk * a.inv_mk + Ti * a.inv_mi);
-      out[k] += f(a, sqrtV, Tk, Ti, a.W);
-      if (i != k) {
-        const Pair& b = pairs_[i * N + k];
-        out[i] += f(b, sqrtV, Ti, Tk, b.W);
-      }
-    }
+    if (with_xi) xi[k] = 0.0;
+    if (with_tau) inv_tau[k] = 0.0;
   }
+  const double *pref_ki = L.pref_ki.data(), *pref_ik = L.pref_ik.data(), *mu_ki = L.mu_ki.data(), *mu_ik = L.mu_ik.data();
+  const double *W2 = L.W2.data(), *D = L.D.data();
+  constexpr std::size_t B = 256;
+  double row_terms_xi[B], row_terms_tau[B];
+  std::size_t l = 0;  // index of the link (k, k)
+  for (std::size_t k = 0; k < N; ++k) {
+    const double Tk = T[k], ik = inv_m[k];
+    double row_xi = 0.0, row_tau = 0.0;
+    {  // i = k
+      const double sqrtV = std::sqrt(Tk * ik + Tk * ik);
+      const CollisionMoments W{W2[l], D[l]};
+      if (with_xi) row_xi = xi[k] + xi_f(pref_ki[l], mu_ki[l], mu_ik[l], sqrtV, Tk, Tk, W);
+      if (with_tau) row_tau = inv_tau[k] + tau_f(pref_ki[l], mu_ki[l], mu_ik[l], sqrtV, Tk, Tk, W);
+      ++l;
+    }
+    // Blocks of partners: the terms are independent in i (they vectorise: sqrt, division); the row
+    // sums then add them in order from a buffer on the stack.
+    for (std::size_t i0 = k + 1; i0 < N; i0 += B) {
+      const std::size_t n = std::min(B, N - i0);
+      for (std::size_t j = 0; j < n; ++j) {
+        const std::size_t i = i0 + j, p = l + j;
+        const double Ti = T[i], sqrtV = std::sqrt(Tk * ik + Ti * inv_m[i]);
+        const CollisionMoments W{W2[p], D[p]};
+        if (with_xi) {
+          row_terms_xi[j] = xi_f(pref_ki[p], mu_ki[p], mu_ik[p], sqrtV, Tk, Ti, W);
+          xi[i] += xi_f(pref_ik[p], mu_ik[p], mu_ki[p], sqrtV, Ti, Tk, W);
+        }
+        if (with_tau) {
+          row_terms_tau[j] = tau_f(pref_ki[p], mu_ki[p], mu_ik[p], sqrtV, Tk, Ti, W);
+          inv_tau[i] += tau_f(pref_ik[p], mu_ik[p], mu_ki[p], sqrtV, Ti, Tk, W);
+        }
+      }
+      for (std::size_t j = 0; j < n; ++j) {
+        if (with_xi) row_xi += row_terms_xi[j];
+        if (with_tau) row_tau += row_terms_tau[j];
+      }
+      l += n;
+    }
+    if (with_xi) xi[k] = row_xi;
+    if (with_tau) inv_tau[k] = row_tau;
+  }
+}
+
+}  // namespace
+
+void CollisionRates::symmetric_sums(const double* T, double* xi, double* inv_tau) const {
+  const std::size_t N = mix_.size();
+  const auto xi_f = [](auto... a) { return xi_formula(a...); };  // lambdas: inlined into the pass
+  const auto tau_f = [](auto... a) { return inv_tau_formula(a...); };
+  if (xi && inv_tau)
+    pair_pass<true, true>(N, T, inv_m_.data(), links_, xi, inv_tau, xi_f, tau_f);
+  else if (xi)
+    pair_pass<true, false>(N, T, inv_m_.data(), links_, xi, nullptr, xi_f, tau_f);
+  else
+    pair_pass<false, true>(N, T, inv_m_.data(), links_, nullptr, inv_tau, xi_f, tau_f);
 }
 
 void CollisionRates::xi_all(const double* T, double* out) const {
   if (law_.is_viscoelastic())
     for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = xi_species(k, T);
   else
-    symmetric_sum(T, out, xi_formula);
+    symmetric_sums(T, out, nullptr);
 }
 
 void CollisionRates::inv_tau_v_all(const double* T, double* out) const {
   if (law_.is_viscoelastic())
     for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = inv_tau_v_species(k, T);
   else
-    symmetric_sum(T, out, inv_tau_formula);
+    symmetric_sums(T, nullptr, out);
+}
+
+void CollisionRates::xi_and_inv_tau_v_all(const double* T, double* xi, double* inv_tau) const {
+  if (law_.is_viscoelastic()) {
+    xi_all(T, xi);
+    inv_tau_v_all(T, inv_tau);
+  } else {
+    symmetric_sums(T, xi, inv_tau);
+  }
 }
 
 double CollisionRates::diffusion(std::size_t k, const double* T) const {

@@ -23,7 +23,8 @@ enum class MomentMethod { automatic, series, quadrature };
 
 class CollisionRates {
  public:
-  // Largest pair table the constructor accepts (1 GB: about 3700 species); above, std::invalid_argument.
+  // Largest pair table the constructor accepts (1 GB: N(N+1)/2 × 48 bytes, about 6400 species);
+  // above, std::invalid_argument.
   static constexpr double max_pair_table_bytes = 1e9;
 
   CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
@@ -39,9 +40,11 @@ class CollisionRates {
   double xi(std::size_t k, std::size_t i, double Tk, double Ti) const;         // ξ_ki
   double inv_tau_v(std::size_t k, std::size_t i, double Tk, double Ti) const;  // τ_v,ki⁻¹
 
-  // ξ_k = Σ_i ξ_ki (v1 Eq. 23) and τ_v,k⁻¹ = Σ_i τ_v,ki⁻¹ (v1 Eq. 20) for all k at once.
+  // ξ_k = Σ_i ξ_ki (v1 Eq. 23) and τ_v,k⁻¹ = Σ_i τ_v,ki⁻¹ (v1 Eq. 20) for all k at once; both
+  // together in one pass over the pairs (the same numbers as the two calls).
   void xi_all(const double* T, double* xi) const;
   void inv_tau_v_all(const double* T, double* inv_tau) const;
+  void xi_and_inv_tau_v_all(const double* T, double* xi, double* inv_tau) const;
   double xi_species(std::size_t k, const double* T) const;
   double inv_tau_v_species(std::size_t k, const double* T) const;
 
@@ -49,32 +52,41 @@ class CollisionRates {
   double diffusion(std::size_t k, const double* T) const;
 
  private:
-  struct Pair {
-    double prefactor;  // (4/3)√(2π) n_i σ_ki² χ_ki
-    double mu;         // m_i / (m_i + m_k)
-    double mu_k;       // m_k / (m_i + m_k)
-    double inv_mk, inv_mi;
-    CollisionMoments W;  // constant law: the pair's moments, computed once
+  // The constants of every unordered pair k <= i in both directions, in a packed upper triangle
+  // (row k holds i = k … N−1 contiguously), one array per constant so that the symmetric sums
+  // stream through them and vectorise.
+  struct Links {
+    std::vector<double> pref_ki, pref_ik;  // (4/3)√(2π) n_i σ_ki² χ_ki and (4/3)√(2π) n_k σ_ki² χ_ik
+    std::vector<double> mu_ki, mu_ik;      // m_i/(m_i+m_k) and m_k/(m_i+m_k)
+    std::vector<double> W2, D;             // constant law: the pair's moments, computed once (ε_ki = ε_ik)
   };
-  const Pair& pair(std::size_t k, std::size_t i) const { return pairs_[k * mix_.size() + i]; }
-  // ξ_ki from its parts (the formula at the top of this file); shared by xi() and xi_all().
-  static double xi_formula(const Pair& p, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
-    return p.prefactor * sqrtV * p.mu * (W.D - p.mu_k * (Ti - Tk) / Tk * W.W2);
+  static constexpr std::size_t link_bytes = 6 * sizeof(double);
+  std::size_t link_index(std::size_t k, std::size_t i) const { return k * (2 * mix_.size() - k + 1) / 2 + (i - k); }
+  // One direction k → i of a link: what the formulas need.
+  struct Pair {
+    double prefactor, mu, mu_k;  // (4/3)√(2π) n_i σ_ki² χ_ki, m_i/(m_i+m_k), m_k/(m_i+m_k)
+    double inv_mk, inv_mi;
+  };
+  Pair pair(std::size_t k, std::size_t i) const;
+  // ξ_ki and τ_v,ki⁻¹ from their parts (the formulas at the top of this file); shared by the single
+  // pair functions and the sums over all pairs, so that both give the same numbers.
+  static double xi_formula(double pref, double mu, double mu_k, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
+    return pref * sqrtV * mu * (W.D - mu_k * (Ti - Tk) / Tk * W.W2);
   }
-  // τ_v,ki⁻¹ likewise; shared by inv_tau_v() and inv_tau_v_all().
-  static double inv_tau_formula(const Pair& p, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
-    return p.prefactor * (sqrtV * p.mu) * (1.0 + p.mu_k * (Ti - Tk) / Tk) * W.W2 * 0.5;
+  static double inv_tau_formula(double pref, double mu, double mu_k, double sqrtV, double Tk, double Ti,
+                                const CollisionMoments& W) {
+    return pref * (sqrtV * mu) * (1.0 + mu_k * (Ti - Tk) / Tk) * W.W2 * 0.5;
   }
-  // Σ_i f(pair k i) for all k, each unordered pair once with √V shared (constant law: the hot path
-  // of the temperature ODE with hundreds of species); summation order per k as in the plain loop.
-  template <class F>
-  void symmetric_sum(const double* T, double* out, F f) const;
+  // Constant law: Σ_i over all pairs for every k, each unordered pair once with √V shared, the sum for
+  // each k in the order i = 0 … N−1 (as the single-species sums); xi or inv_tau may be null.
+  void symmetric_sums(const double* T, double* xi, double* inv_tau) const;
 
   model::Mixture mix_;
   model::Restitution law_;
   std::vector<std::vector<double>> chi_;
   MomentMethod method_;
-  std::vector<Pair> pairs_;
+  std::vector<double> inv_m_;
+  Links links_;
 };
 
 }  // namespace granmix::theory

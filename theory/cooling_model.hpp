@@ -4,10 +4,11 @@
 //                  integrated beside ln T_k (the relaxing Sonine cumulants, sonine_cooling.hpp);
 //   VelocityDecay  the decay rate ν_k of a tagged particle's velocity correlation in the VACF ODE
 //                  dQ_k/dt = 3T_k/m_k − ν_k Q_k (physics-beyond.md §2).
-// The defaults are the paper level: Maxwellian ξ_k (v1 A2) and ν_k = τ_v,k⁻¹ + ξ_k/2, the first-Sonine
-// momentum-transfer rate (physics-beyond.md §1 identity). Implementations may keep scratch arrays
+// The defaults are the paper level (MaxwellClosures): Maxwellian ξ_k (v1 A2) and ν_k = τ_v,k⁻¹ + ξ_k/2,
+// the first-Sonine momentum-transfer rate (physics-beyond.md §1 identity). Implementations may keep scratch arrays
 // (no allocation per call), so one model object serves one integration at a time.
 #include <cstddef>
+#include <vector>
 
 #include "collision_rates.hpp"
 
@@ -31,27 +32,21 @@ class VelocityDecay {
   virtual void rates(const double* T, const double* xi, double* nu) const = 0;
 };
 
-// v1 Eq. (A2) (= Garzó–Dufty at a₂ = 0), CollisionRates::xi_all.
-class MaxwellCooling final : public CoolingModel {
+// The paper level, both closures in one object: ξ_k of v1 (A2) (= Garzó–Dufty at a₂ = 0) and
+// ν_k = τ_v,k⁻¹ + ξ_k/2 with v1's τ_v,k⁻¹ (A1), the first-Sonine momentum-transfer rate. With
+// `fused`, the cooling call also computes τ_v,k⁻¹ in the same pass over the pairs and the decay call
+// at the same temperatures reuses it (the VACF MSD of hundreds of species costs one pair pass).
+class MaxwellClosures final : public CoolingModel, public VelocityDecay {
  public:
-  explicit MaxwellCooling(const CollisionRates& rates) : rates_(rates) {}
-  void rates(const double* T, const double*, double* xi, double*) const override { rates_.xi_all(T, xi); }
+  MaxwellClosures(const CollisionRates& rates, bool fused);
+  void rates(const double* T, const double* z, double* xi, double* dz_dt) const override;  // cooling
+  void rates(const double* T, const double* xi, double* nu) const override;                // decay
 
  private:
   const CollisionRates& rates_;
-};
-
-// ν_k = τ_v,k⁻¹ + ξ_k/2 with v1's τ_v,k⁻¹ (A1): the first-Sonine momentum-transfer rate.
-class MaxwellDecay final : public VelocityDecay {
- public:
-  explicit MaxwellDecay(const CollisionRates& rates) : rates_(rates) {}
-  void rates(const double* T, const double* xi, double* nu) const override {
-    rates_.inv_tau_v_all(T, nu);
-    for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = nu[k] + 0.5 * xi[k];
-  }
-
- private:
-  const CollisionRates& rates_;
+  bool fused_;
+  mutable bool cached_ = false;
+  mutable std::vector<double> T_, inv_tau_;  // the temperatures of the last fused pass and its τ_v⁻¹
 };
 
 }  // namespace granmix::theory

@@ -23,8 +23,11 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   for (double T : T0_)
     if (!(T > 0.0) || !std::isfinite(T)) throw std::invalid_argument("temperatures: initial T_k must be positive");
   if (!(t_end > 0.0) || !std::isfinite(t_end)) throw std::invalid_argument("temperatures: end time must be positive");
-  cooling_ = opt_.cooling ? opt_.cooling : std::make_shared<MaxwellCooling>(rates_);
-  decay_ = opt_.decay ? opt_.decay : std::make_shared<MaxwellDecay>(rates_);
+  // Default closures: one MaxwellClosures object for both, so the VACF's τ_v⁻¹ comes from the
+  // cooling rates' pair pass.
+  const auto maxwell = std::make_shared<MaxwellClosures>(rates_, opt_.vacf && !opt_.cooling && !opt_.decay);
+  cooling_ = opt_.cooling ? opt_.cooling : std::shared_ptr<const CoolingModel>(maxwell);
+  decay_ = opt_.decay ? opt_.decay : std::shared_ptr<const VelocityDecay>(maxwell);
   n_ = N_;
   nz_ = cooling_->state_size();
   z_at_ = n_, n_ += nz_;
@@ -88,14 +91,16 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
       model::check_cvode(flag, "CVode", "temperature ODE at t = " + std::to_string(to_t(s)));
       int q = 0;
       model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
-      Step st{s, q, taylor_.size()};
+      // One block per step (a single growing array was copied on every reallocation: 10% of the
+      // time at 500 species with the VACF MSD).
+      Step st{s, q, std::vector<double>(std::size_t(q + 1) * n_)};
       double factorial = 1.0;
       for (int j = 0; j <= q; ++j) {
         model::check_cvode(CVodeGetDky(cv.mem(), s, j, dky_v), "CVodeGetDky");
         if (j > 0) factorial *= j;
-        for (std::size_t c = 0; c < n_; ++c) taylor_.push_back(dky[c] / factorial);
+        for (std::size_t c = 0; c < n_; ++c) st.taylor[j * n_ + c] = dky[c] / factorial;
       }
-      steps_.push_back(st);
+      steps_.push_back(std::move(st));
     }
   } catch (...) {
     N_VDestroy(dky_v);
@@ -169,7 +174,7 @@ double TemperatureHistory::component(double t, std::size_t c) const {
   if (it == steps_.end()) --it;
   const double x = s - it->s_end;  // <= 0, within the step
   double v = 0.0;
-  for (int j = it->order; j >= 0; --j) v = v * x + taylor_[it->offset + j * n_ + c];
+  for (int j = it->order; j >= 0; --j) v = v * x + it->taylor[j * n_ + c];
   return v;
 }
 

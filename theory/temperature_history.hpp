@@ -37,7 +37,7 @@ struct TemperatureOptions {
   // Earliest time at which the companions must be accurate (0: 1e-8 of the clock's time unit).
   // Their absolute tolerances are rtol times their size there; see temperature_history.cpp.
   double t_first = 0.0;
-  // Closures (cooling_model.hpp); null: MaxwellCooling and MaxwellDecay of the rates (the paper level).
+  // Closures (cooling_model.hpp); null: MaxwellClosures of the rates (the paper level).
   std::shared_ptr<const CoolingModel> cooling;
   std::shared_ptr<const VelocityDecay> decay;
 };
@@ -77,7 +77,7 @@ class TemperatureHistory {
   struct Step {
     double s_end;
     int order;
-    std::size_t offset;  // into taylor_: (order+1) blocks of n_ values, y^(j)(s_end)/j!
+    std::vector<double> taylor;  // (order+1) blocks of n_ values, y^(j)(s_end)/j!
   };
   double component(double t, std::size_t index) const;
   static int rhs(double s, N_Vector y, N_Vector dy, void* self);
@@ -93,7 +93,6 @@ class TemperatureHistory {
   std::shared_ptr<const VelocityDecay> decay_;
   std::size_t z_at_ = 0, nz_ = 0, tau_at_ = 0, int_at_ = 0, r2_at_ = 0, j_at_ = 0;
   std::vector<Step> steps_;
-  std::vector<double> taylor_;
   std::vector<double> y0_;
   SolverStats stats_;
   std::exception_ptr rhs_error_;

@@ -78,7 +78,7 @@ TEST_CASE("500 species: temperatures to t = 1e12 finite - monotone - settling", 
 }
 
 TEST_CASE("1e4 species: the theory refuses with the memory limit named - 1000 species run to t = 1e12", "[theory][hard]") {
-  // N² pair constants: 1e4 species would need 7.2 GB and hours of O(N²) right-hand sides.
+  // N(N+1)/2 pair constants of 48 bytes: 1e4 species would need 2.4 GB and hours of O(N²) right-hand sides.
   const model::Mixture big = test::power_law(10000);
   CHECK_THROWS_WITH(CollisionRates(big, model::Restitution::constant(10000, 0.5), model::dilute_contact_values(1)),
                     Catch::Contains("10000 species need a pair table") && Catch::Contains("the limit is 1 GB"));
