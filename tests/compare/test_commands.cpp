@@ -66,8 +66,14 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   REQUIRE(t.comments.size() == 6);
   CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
   CHECK(t.comments[1].find("sha256: ") != std::string::npos);
-  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd"});
+  // The kinetic level judged, the paper level beside it (issue 12).
+  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper"});
   REQUIRE(t.rows.size() == 41 * 3);
+  // Ballistic start: both levels start from the same state (within 0.5% at t = 0.01, where they differ
+  // only in the O(νt) decay of the velocity memory); by t = 1e6 the
+  // kinetic level's second-Sonine D has moved the light species' MSD by more than 5%.
+  CHECK(t.at(1, "msd") == Approx(t.at(1, "msd_paper")).epsilon(5e-3));
+  CHECK(std::abs(t.at(t.rows.size() - 2, "msd") / t.at(t.rows.size() - 2, "msd_paper") - 1.0) > 0.05);
   // First time t = 0.01, species 2 (row 2): close to ballistic 3 T t²/m (correction O(t/τ_v) ~ 1e-2).
   CHECK(t.at(2, "msd") == Approx(3 * 1e-4 / 100).epsilon(0.02));
   // Species 0 row: total MSD is the density-weighted mean (v1 Eq. 16), equal densities here.
@@ -110,12 +116,12 @@ struct BinaryByHand {
 
 TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent transcription of the rates", "[compare]") {
   const Tsv t = theory_of("bo1-fig05");
-  CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment"});
+  CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_paper", "D_ratio_increment_paper"});
   REQUIRE(t.rows.size() == 102);
   for (std::size_t row = 1; row < t.rows.size(); row += 10) {
     const double e = t.at(row, "eps");
     const BinaryByHand b{{1.0, 100.0}, {1.0, std::cbrt(100.0)}, {0.1, 0.1}, e};
-    CHECK(t.at(row, "D_ratio") == Approx(b.settled_D_ratio()).epsilon(1e-9));
+    CHECK(t.at(row, "D_ratio_paper") == Approx(b.settled_D_ratio()).epsilon(1e-9));
     // What the DSMC measures: MSD increments between t = 50 and 5000 from the settled start; by Eq. (17)
     // in time (the file) and by the settled closed form (v2 Eq. 22) here — two routes to one number.
     const theory::CollisionRates rates(model::Mixture({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}}), model::Restitution::constant(2, e),
@@ -124,12 +130,12 @@ TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent tran
     auto increment = [&](std::size_t k) {
       return theory::msd_closed(d.D[k], d.tau_v[k], d.tau0, 5000.0) - theory::msd_closed(d.D[k], d.tau_v[k], d.tau0, 50.0);
     };
-    CHECK(t.at(row, "D_ratio_increment") == Approx(increment(1) / increment(0)).epsilon(1e-4));
+    CHECK(t.at(row, "D_ratio_increment_paper") == Approx(increment(1) / increment(0)).epsilon(1e-4));
   }
   // v1 text: D2/D1 increases as eps decreases; and the increments differ from Eq. (19) by more than
   // the 1e-4 the check above resolves (otherwise the like-for-like column would test nothing).
-  CHECK(t.at(1, "D_ratio") > t.at(101, "D_ratio"));
-  CHECK(std::abs(t.at(1, "D_ratio_increment") / t.at(1, "D_ratio") - 1.0) > 1e-3);
+  CHECK(t.at(1, "D_ratio_paper") > t.at(101, "D_ratio_paper"));
+  CHECK(std::abs(t.at(1, "D_ratio_increment_paper") / t.at(1, "D_ratio_paper") - 1.0) > 1e-3);
 }
 
 TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compare]") {
@@ -270,8 +276,11 @@ TEST_CASE("mg-fig01 scene: gamma(t) in MG time units - theory to the Maxwellian 
   const auto law = model::Restitution::constant(2, 0.5);
   const double maxwell = 1.0 / theory::settled_ratios(theory::CollisionRates(mix, law, model::dilute_contact_values(2)))[1];
   const double sonine = theory::sonine_hcs(mix, law, model::dilute_contact_values(2)).gamma();
-  // 60 t0 is ~28 collisions per particle: the ODE has settled to 1e-4 (measured 1.3e-5).
-  CHECK(th.at(last, "gamma") == Approx(maxwell).epsilon(1e-4));
+  // 60 t0 is ~28 collisions per particle: each level's ODE has settled to 1e-4 (measured 1.3e-5) on its
+  // own HCS: the kinetic level (judged) on the first-Sonine γ, the paper level on the Maxwellian one.
+  // The two differ by 0.7%, seventy times the bound.
+  CHECK(th.at(last, "gamma") == Approx(sonine).epsilon(1e-4));
+  CHECK(th.at(last, "gamma_paper") == Approx(maxwell).epsilon(1e-4));
   // DSMC: the first-Sonine value within 1% (issue 4's bound for γ), statistical error ~0.4%.
   CHECK(ds.at(last, "gamma") == Approx(sonine).epsilon(0.01));
 }
@@ -287,14 +296,18 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
   for (const char* key : {"scene", "pass", "quantities", "theory_seconds", "dsmc_seconds", "collisions", "collisions_per_second",
                           "acceptance", "particles", "replicas", "seed", "fidelity"})
     CHECK(rep.contains(key));
-  // The scene passes: γ within 2.1% (the Maxwellian ODE's model gap plus 4 quick standard errors) or 4σ.
+  // The scene passes; γ's model error is computed (the kinetic level's correction over the paper
+  // level, between 0 and the 0.7% Maxwell–Sonine γ gap) and the paper level's gap is reported.
   CHECK(rep["pass"].get<bool>());
   CHECK(rep["quantities"]["gamma"]["failed"].get<int>() == 0);
-  CHECK(rep["quantities"]["gamma"]["tolerance"]["relative"].get<double>() == 0.021);
+  CHECK(rep["quantities"]["gamma"]["tolerance"]["correction_from"].get<std::string>() == "paper");
+  CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() > 0.001);
+  CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() < 0.008);
+  CHECK(rep["quantities"]["gamma"].contains("paper_max_rel"));
   // The same scene with an impossible tolerance fails with exit code 1 and says so.
   std::ifstream in(test::scene_path("mg-fig01.toml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string loose = "relative = 0.021, z = 4";
+  const std::string loose = "correction_from = \"paper\", relative = 0, z = 4";
   const auto at = text.find(loose);
   REQUIRE(at != std::string::npos);
   text.replace(at, loose.size(), "relative = 1e-9, z = 0");
