@@ -4,7 +4,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
-#include <numbers>
 
 #include "dsmc/ensemble.hpp"
 #include "dsmc/event_loop.hpp"
@@ -56,14 +55,17 @@ TEST_CASE("property: DSMC conserves momentum at any eps and energy at eps = 1 (r
     Counters counters;
     EventLoop<DirectSelector> loop(p, sel, m.law, rng, counters, p.size());
     const Sums before = sums(p);
-    // ~20 collisions per particle: the mean free time of the fastest species sets the clock
+    // 20 collisions per particle: the stop time doubles from the fastest pair's mean free time
+    // (an inelastic gas cools and collides ever more slowly; 200 doublings bound the loop)
     double rate = 0.0;
     for (std::size_t k = 0; k < M; ++k)
       for (std::size_t i = 0; i < M; ++i) {
         const double s = m.mixture.sigma(k, i);
-        rate = std::max(rate, 4 * std::sqrt(std::numbers::pi) * m.mixture[i].density * s * s * std::sqrt(1.0 / m.mixture[k].mass + 1.0 / m.mixture[i].mass));
+        rate = std::max(rate, m.mixture[i].density * s * s * std::sqrt(1.0 / m.mixture[k].mass + 1.0 / m.mixture[i].mass));
       }
-    loop.run_until(20.0 / rate);
+    double t_stop = 1.0 / rate;
+    for (int d = 0; d < 200 && counters.accepted < 20 * N; ++d, t_stop *= 2) loop.run_until(t_stop);
+    CHECK(counters.accepted >= 20 * N);
     const Sums after = sums(p);
     collisions += counters.accepted;
     const double dp = std::sqrt(std::pow(after.px - before.px, 2) + std::pow(after.py - before.py, 2) + std::pow(after.pz - before.pz, 2));
@@ -78,7 +80,6 @@ TEST_CASE("property: DSMC conserves momentum at any eps and energy at eps = 1 (r
   }
   std::printf("DSMC conservation: %llu collisions, worst |dP|/sum m|v| = %.2e, worst elastic |dE/E| = %.2e\n",
               static_cast<unsigned long long>(collisions), worst_p, worst_e);
-  CHECK(collisions > 40 * 300);  // the runs did collide (about 20 per particle of the fastest species)
 }
 
 TEST_CASE("property: same seed - same numbers on 1 and 2 threads (random small mixtures)", "[property]") {
