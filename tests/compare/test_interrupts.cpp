@@ -41,7 +41,7 @@ struct Interrupted {
 // Starts `granmix compare` on the long scene, waits until its staging folder exists (computing has
 // begun), sends `sig` and waits for the exit.
 Interrupted interrupt_compare(const std::filesystem::path& out, int sig) {
-  const std::filesystem::path err = out.parent_path() / (out.filename().string() + ".stderr");
+  const std::filesystem::path err = test::fresh_dir("interrupt-stderr-" + std::to_string(getpid())) / "stderr.txt";
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
@@ -50,8 +50,9 @@ Interrupted interrupt_compare(const std::filesystem::path& out, int sig) {
               threads = "--threads", two = "2";
   char* argv[] = {exe.data(), cmd.data(), scene.data(), flag.data(), dir.data(), threads.data(), two.data(), nullptr};
   pid_t pid = 0;
-  REQUIRE(posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv, environ) == 0);
+  const int spawned = posix_spawn(&pid, exe.c_str(), &fa, nullptr, argv, environ);
   posix_spawn_file_actions_destroy(&fa);
+  REQUIRE(spawned == 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (!has_entry_starting(out, ".interrupt-long-dsmc.tmp-") && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
