@@ -3,8 +3,14 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 OUT ?= out
+SANITIZE_BUILD ?= build-asan
+FUZZ_BUILD ?= build-fuzz
+FUZZ_SECONDS ?= 300
+# Under the sanitizers: every label but dsmc and slow (the DSMC engine is covered by hard and
+# property), plus the fuzz-corpus replay.
+SANITIZE_LABELS ?= model|theory|compare|hard|property|fuzz
 
-.PHONY: deps build test validate figures bench clean
+.PHONY: deps build test validate figures bench sanitize fuzz clean
 
 deps:
 	@scripts/install-deps.sh
@@ -25,5 +31,20 @@ figures: build
 bench: build
 	@$(BUILD)/granmix bench --out $(OUT)
 
+# Address and undefined-behaviour sanitizers (-O1, any finding aborts) in their own build folder.
+sanitize: deps
+	@cmake -S . -B $(SANITIZE_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+	  -DGRANMIX_SANITIZE=address,undefined > /dev/null
+	@cmake --build $(SANITIZE_BUILD) -j$(JOBS)
+	cd $(SANITIZE_BUILD) && ctest --output-on-failure -j$(JOBS) -L '$(SANITIZE_LABELS)'
+
+# libFuzzer harnesses of tests/fuzz (clang), FUZZ_SECONDS each, one after the other.
+fuzz: deps
+	@scripts/install-deps.sh --fuzz
+	@CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
+	  -DGRANMIX_FUZZ=ON > /dev/null
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target fuzz_scene fuzz_hcs_args fuzz_tsv_roundtrip
+	@scripts/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
 clean:
-	rm -rf $(BUILD) $(OUT)
+	rm -rf $(BUILD) $(OUT) $(SANITIZE_BUILD) $(FUZZ_BUILD)

@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "interrupts.hpp"
 #include "model/errors.hpp"
 #include "scene_compare.hpp"
 #include "summary_table.hpp"
@@ -41,6 +42,8 @@ std::function<int()> add_compare_command(CLI::App& app) {
   cmd->add_option("scene", *scene, "scene file (TOML)")->required();
   add_run_options(cmd, *o);
   return [o, scene]() {
+    interrupts::install();
+    interrupts::require_writable_folder(o->out);
     const model::Scene s = model::load_scene(*scene);
     const SceneOutcome r = compare_scene(s, o->out, o->fidelity, o->seed, o->threads);
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
@@ -55,6 +58,8 @@ std::function<int()> add_validate_command(CLI::App& app) {
   add_run_options(cmd, *o);
   cmd->add_option("--scenes", o->scenes, "scene folder (default compare/scenes)");
   return [o]() {
+    interrupts::install();
+    interrupts::require_writable_folder(o->out);
     const std::filesystem::path dir = o->scenes.empty() ? default_scenes() : std::filesystem::path(o->scenes);
     if (!std::filesystem::is_directory(dir)) throw InputError("validate: no scene folder " + dir.string() + " (allowed: a folder of *.toml)");
     std::vector<std::filesystem::path> files;
@@ -73,8 +78,13 @@ std::function<int()> add_validate_command(CLI::App& app) {
         std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
       }
       std::fflush(stdout);
+      interrupts::set_finished(std::to_string(all.size()) + " of " + std::to_string(files.size()) + " scenes written to " + o->out +
+                               "/, no summary");
     }
-    write_summary(o->out, all, errors);
+    {
+      interrupts::WriteGuard g;  // summary.tsv and summary.json together
+      write_summary(o->out, all, errors);
+    }
     const bool pass = errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& s) { return s.pass; });
     std::printf("validate (%s): %zu scenes, %s -> %s/summary.tsv, summary.json\n", o->fidelity.c_str(), files.size(),
                 pass ? "all pass" : "FAILURES", o->out.c_str());

@@ -9,6 +9,7 @@
 
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
+#include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
 #include "sha256.hpp"
@@ -25,6 +26,8 @@ struct DsmcOptions {
 };
 
 int run(const DsmcOptions& o) {
+  interrupts::install();
+  interrupts::require_writable_folder(o.out);
   const model::Scene s = model::load_scene(o.scene);
   const bool tty = isatty(STDERR_FILENO);
   auto progress = [&](std::size_t done, std::size_t total) {
@@ -37,9 +40,12 @@ int run(const DsmcOptions& o) {
   p.seed = std::to_string(o.seed) + " (replica r uses stream (seed, r))";
   p.fidelity = o.fidelity;
   const std::filesystem::path file = std::filesystem::path(o.out) / s.name / "dsmc.tsv";
-  write_atomically(file, format_tsv(provenance_header(p), run.table));
-  if (!run.distribution.rows.empty())
-    write_atomically(file.parent_path() / "distribution.tsv", format_tsv(provenance_header(p), run.distribution));
+  {
+    interrupts::WriteGuard g;  // both files or neither
+    write_atomically(file, format_tsv(provenance_header(p), run.table));
+    if (!run.distribution.rows.empty())
+      write_atomically(file.parent_path() / "distribution.tsv", format_tsv(provenance_header(p), run.distribution));
+  }
   const dsmc::DsmcResult& r = run.result;
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);

@@ -12,6 +12,7 @@
 #include "provenance.hpp"
 #include "sha256.hpp"
 #include "theory/scene_theory.hpp"
+#include "interrupts.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -67,10 +68,14 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
                            int threads) {
   SceneOutcome o;
   o.scene = s.name;
-  std::filesystem::create_directories(out);
   const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
-  std::filesystem::remove_all(tmp);
-  std::filesystem::create_directories(tmp);
+  {
+    interrupts::WriteGuard g;  // an interrupt removes the staging folder, never leaves it half made
+    std::filesystem::create_directories(out);
+    std::filesystem::remove_all(tmp);
+    std::filesystem::create_directories(tmp);
+    interrupts::set_staging(tmp);
+  }
   try {
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = sha256_hex(s.text), p.command = command_line();
@@ -105,11 +110,15 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
       pd.seed = std::to_string(seed), pd.fidelity = fidelity;
       write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), th.table.columns.front(), d));
     }
+    interrupts::WriteGuard g;  // figure, report and rename: finished together or not at all
     o.figure = write_figure(tmp, s, th.table, dsmc_table).message;
     write_atomically(tmp / "report.json", report(s, o, seed, fidelity).dump(2) + "\n");
     std::filesystem::remove_all(out / s.name);
     std::filesystem::rename(tmp, out / s.name);  // the scene folder appears complete or not at all
+    interrupts::set_staging({});
   } catch (...) {
+    interrupts::WriteGuard g;
+    interrupts::set_staging({});
     std::filesystem::remove_all(tmp);
     throw;
   }

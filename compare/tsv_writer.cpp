@@ -1,5 +1,7 @@
 #include "tsv_writer.hpp"
 
+#include "interrupts.hpp"
+
 #include <fmt/format.h>
 #include <unistd.h>
 
@@ -28,6 +30,7 @@ std::string format_tsv(const std::string& provenance, const model::Table& table)
 }
 
 void write_atomically(const std::filesystem::path& path, const std::string& content) {
+  interrupts::WriteGuard g;  // an interrupt waits until the file is in place
   std::filesystem::create_directories(path.parent_path());
   // Built step by step: GCC 12 warns falsely (-Wrestrict) on "." + std::string.
   std::string name = ".";

@@ -340,10 +340,12 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path) { return load_scene_text(read_file(path), path); }
+
+Scene load_scene_text(const std::string& text, const std::string& path) {
   Scene s;
   s.file = path;
-  s.text = read_file(path);
+  s.text = text;
   toml::table root;
   try {
     root = toml::parse(s.text, path);

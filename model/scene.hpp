@@ -118,6 +118,8 @@ struct Scene {
 
 // Throws InputError("file:line: key: what is wrong (allowed: …)").
 Scene load_scene(const std::string& path);
+// The same from the file's text; `path` only names it in messages (and Scene::file). Fuzzed in tests/fuzz.
+Scene load_scene_text(const std::string& text, const std::string& path);
 
 // The scene at one value x of its sweep (mixture, restitution, Enskog as the parameter says), sweep removed.
 Scene sweep_point(const Scene& scene, double x);

@@ -17,6 +17,9 @@ packages=(
   nlohmann-json3-dev
   libpcg-cpp-dev       # random streams for DSMC
 )
+if [ "${1:-}" = "--fuzz" ]; then  # make fuzz only: libFuzzer and the clang sanitizer runtimes
+  packages=(clang libclang-rt-dev)
+fi
 
 missing=()
 for p in "${packages[@]}"; do

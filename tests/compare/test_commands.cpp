@@ -10,6 +10,7 @@
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
 #include "run_cli.hpp"
+#include "tsv_reader.hpp"
 #include "theory/diffusion.hpp"
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
@@ -20,35 +21,8 @@ using namespace granmix;
 
 namespace {
 
-struct Tsv {
-  std::vector<std::string> comments, columns;
-  std::vector<std::vector<double>> rows;
-  double at(std::size_t row, const std::string& col) const {
-    for (std::size_t c = 0; c < columns.size(); ++c)
-      if (columns[c] == col) return rows.at(row)[c];
-    throw std::runtime_error("no column " + col);
-  }
-};
-
-Tsv read_tsv(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  Tsv t;
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("#", 0) == 0) {
-      t.comments.push_back(line);
-    } else if (t.columns.empty()) {
-      std::istringstream s(line);
-      for (std::string c; std::getline(s, c, '\t');) t.columns.push_back(c);
-    } else {
-      std::istringstream s(line);
-      std::vector<double> row;
-      for (std::string c; std::getline(s, c, '\t');) row.push_back(std::stod(c));
-      t.rows.push_back(row);
-    }
-  }
-  return t;
-}
+using test::read_tsv;
+using test::Tsv;
 
 // `granmix theory` on a shipped scene, written to a fresh folder; its theory.tsv.
 Tsv theory_of(const std::string& scene) {

@@ -1,0 +1,109 @@
+#include "interrupts.hpp"
+
+#include <pthread.h>
+#include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "model/errors.hpp"
+
+namespace granmix::compare::interrupts {
+
+namespace {
+
+struct State {
+  std::recursive_mutex mutex;
+  std::filesystem::path staging;
+  std::string finished = "nothing";
+  std::vector<std::filesystem::path> created;  // output folders this run created, deepest first
+};
+
+// Never destroyed: the watcher may need it while the process exits.
+State& state() {
+  static State* s = new State;
+  return *s;
+}
+
+sigset_t interrupt_signals() {
+  sigset_t set;
+  sigemptyset(&set);
+  sigaddset(&set, SIGINT);
+  sigaddset(&set, SIGTERM);
+  return set;
+}
+
+[[noreturn]] void watch(sigset_t set) {
+  int sig = 0;
+  while (sigwait(&set, &sig) != 0) {
+  }
+  State& s = state();
+  s.mutex.lock();  // held until _Exit: no output is written or renamed any more
+  std::error_code ec;
+  if (!s.staging.empty()) std::filesystem::remove_all(s.staging, ec);
+  for (const auto& d : s.created) std::filesystem::remove(d, ec);  // only if still empty
+  std::fprintf(stderr, "granmix: interrupted by %s; finished: %s; no partial output left\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
+               s.finished.c_str());
+  std::fflush(stderr);
+  std::_Exit(128 + sig);
+}
+
+}  // namespace
+
+void install() {
+  static std::once_flag once;
+  std::call_once(once, [] {
+    const sigset_t set = interrupt_signals();
+    if (const int e = pthread_sigmask(SIG_BLOCK, &set, nullptr); e != 0)
+      throw std::system_error(e, std::generic_category(), "pthread_sigmask");
+    std::thread(watch, set).detach();
+  });
+}
+
+void require_writable_folder(const std::filesystem::path& out) {
+  const std::filesystem::path abs = std::filesystem::absolute(out);
+  std::vector<std::filesystem::path> missing;  // deepest first
+  std::error_code ec;
+  std::filesystem::path p = abs;
+  while (!std::filesystem::exists(p, ec) && p.has_relative_path()) missing.push_back(p), p = p.parent_path();
+  auto fail = [&](const std::string& why) {
+    for (const auto& d : missing) std::filesystem::remove(d, ec);
+    throw InputError("--out " + out.string() + ": " + why + " (allowed: a writable folder, or one that can be created)");
+  };
+  if (!std::filesystem::is_directory(p, ec)) fail(p.string() + " is not a folder");
+  if (!missing.empty() && !std::filesystem::create_directories(abs, ec) && ec) fail("cannot create the folder: " + ec.message());
+  const std::filesystem::path probe = abs / (".granmix-probe-" + std::to_string(getpid()));
+  std::FILE* f = std::fopen(probe.c_str(), "wb");
+  const int err = errno;
+  if (f == nullptr) fail("cannot write in the folder: " + std::string(std::strerror(err)));
+  const bool ok = std::fputc('x', f) != EOF && std::fflush(f) == 0;
+  const bool closed = std::fclose(f) == 0;
+  std::filesystem::remove(probe, ec);
+  if (!ok || !closed) fail("cannot write in the folder (full?)");
+  for (const auto& d : missing) std::filesystem::remove(d, ec);  // created again when there is output
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  s.created = missing;
+}
+
+void set_staging(const std::filesystem::path& dir) {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  s.staging = dir;
+}
+
+void set_finished(const std::string& what) {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  s.finished = what;
+}
+
+WriteGuard::WriteGuard() : lock_(state().mutex) {}
+
+}  // namespace granmix::compare::interrupts

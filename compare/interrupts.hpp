@@ -1,0 +1,34 @@
+#pragma once
+// SIGINT/SIGTERM during `granmix dsmc|compare|validate` (issue 15): the run stops with exit 130/143,
+// one line on stderr saying what was finished, and no partial output: the staging folder of the scene
+// in progress and any output folder this run created empty are removed. Signals are taken by a
+// watcher thread (sigwait), not an async handler, so the clean-up may use the file system freely;
+// a WriteGuard holds it off while outputs are being written or renamed into place.
+#include <filesystem>
+#include <mutex>
+#include <string>
+
+namespace granmix::compare::interrupts {
+
+// Blocks SIGINT and SIGTERM in the calling thread (and so in every thread it starts later, OpenMP's
+// included) and starts the watcher. Call first in a command, before any thread exists.
+void install();
+
+// Exit 2 (InputError naming the path) unless `out` is, or can be created as, a writable folder. The
+// check creates and removes a probe file and the folders it needed; none is left behind.
+void require_writable_folder(const std::filesystem::path& out);
+
+// The folder being filled for the current scene: removed if the run is interrupted. Empty: none.
+void set_staging(const std::filesystem::path& dir);
+// What the run has finished, for the message (e.g. "3 of 33 scenes written to out/").
+void set_finished(const std::string& what);
+
+// While alive, an interrupt waits (writes of several files and the final rename are not split).
+class WriteGuard {
+ public:
+  WriteGuard();
+ private:
+  std::unique_lock<std::recursive_mutex> lock_;
+};
+
+}  // namespace granmix::compare::interrupts
