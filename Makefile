@@ -4,7 +4,7 @@ BUILD ?= build
 JOBS ?= $(shell nproc)
 OUT ?= out
 
-.PHONY: deps build test validate figures bench clean
+.PHONY: deps build test validate figures bench mutants clean
 
 deps:
 	@scripts/install-deps.sh
@@ -24,6 +24,12 @@ figures: build
 
 bench: build
 	@$(BUILD)/granmix bench --out $(OUT)
+
+# The mutation harness (tests/mutants/, not run by CI): plants each bug of mutants.toml in a scratch
+# copy of HEAD, rebuilds, runs validate --fidelity quick and ctest. MUTANTS=id1,id2 runs a subset.
+mutants: deps
+	@command -v python3 > /dev/null || { echo "make mutants: python3 (3.11+) is needed; scripts/install-deps.sh installs it"; exit 2; }
+	JOBS=$(JOBS) nice -n 10 python3 tests/mutants/run_mutants.py
 
 clean:
 	rm -rf $(BUILD) $(OUT)
