@@ -73,10 +73,17 @@ def sync_scratch(src: Path):
                 p.unlink()
 
 
-def run(cmd, log: Path, cwd=None):
-    """Run cmd, output to log; returns (exit code or None on timeout, output)."""
+def run(cmd, log: Path, cwd=None, tmp: Path | None = None):
+    """Run cmd, output to log; returns (exit code or None on timeout, output). With tmp, the command's
+    TMPDIR is that fresh folder: the tests' fixed /tmp/granmix-test-* folders would otherwise be
+    shared with any other checkout running its tests at the same time (a false `caught`)."""
+    env = None
+    if tmp is not None:
+        shutil.rmtree(tmp, ignore_errors=True)
+        tmp.mkdir(parents=True)
+        env = dict(os.environ, TMPDIR=str(tmp))
     try:
-        r = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=TIMEOUT)
+        r = subprocess.run(cmd, cwd=cwd, env=env, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=TIMEOUT)
         out, rc = r.stdout, r.returncode
     except subprocess.TimeoutExpired as e:  # its output arrives as bytes even with text=True
         out, rc = e.stdout.decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or ""), None
@@ -148,7 +155,7 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
                 why = validate_failures(Path(out_dir)) or ["(no failing row)"]
                 note = "timeout" if rc is None else ("" if rc == 1 else f"exit {rc}")
                 return "caught", "validate: " + " ".join(why) + (f" [{note}]" if note else "")
-        rc, out = run(["ctest", "-j", str(JOBS)], logs / f"{m['id']}.ctest.log", cwd=bld)
+        rc, out = run(["ctest", "-j", str(JOBS)], logs / f"{m['id']}.ctest.log", cwd=bld, tmp=bld.parent / "tmp")
         if rc != 0:
             return "caught", "ctest: " + (" | ".join(ctest_failures(out)) or ("timeout" if rc is None else f"exit {rc}"))
         return "missed", ""
