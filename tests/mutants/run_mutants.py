@@ -2,14 +2,17 @@
 """Mutation harness: how many plausible physics bugs does the suite catch? (issue 11, item 5)
 
 Each mutant of mutants.toml is a few exact text edits applied to a scratch copy of the committed
-tree (git archive HEAD, kept between runs so rebuilds are incremental; the real tree is never
-edited). Per mutant: apply, build, `granmix validate --fidelity quick` (caught if exit != 0), and
-only if validate passes, ctest (caught if a test fails); then the files are restored.
-A mutant whose search text is not found exactly once is `stale`, never skipped silently.
+tree (git archive of HEAD or MUTANTS_REV, kept between runs so rebuilds are incremental; the real
+tree is never edited). Per mutant: apply, build granmix, `granmix validate --fidelity quick`
+(caught if exit != 0), and only if validate passes, build the tests and run ctest (caught if a test
+fails); then the files are restored. A mutant whose search text is not found exactly once is
+`stale`, never skipped silently.
 
 Environment: MUTANTS=id1,id2 (a subset, run in that order), JOBS (build, ctest and validate
-threads; default 2), MUTANTS_SCRATCH (scratch folder), MUTANTS_TIMEOUT (seconds per step,
-default 3600). `--check` only tells which mutants still apply to the working tree. Writes tests/mutants/results.tsv and results.md and prints the kill table.
+threads; default 2), MUTANTS_REV (the commit to mutate; default HEAD), MUTANTS_SCRATCH (scratch
+folder), MUTANTS_TIMEOUT (seconds per step, default 3600). `--check` only tells which mutants
+still apply to the working tree. Writes tests/mutants/results.tsv and results.md (a subset run
+adds to an earlier result of the same commit) and prints the kill table.
 Python 3.11 standard library only (tomllib).
 """
 import datetime
@@ -29,6 +32,7 @@ ROOT = Path(subprocess.run(["git", "-C", str(HERE), "rev-parse", "--show-topleve
                            capture_output=True, text=True).stdout.strip())
 JOBS = int(os.environ.get("JOBS") or 2)
 TIMEOUT = float(os.environ.get("MUTANTS_TIMEOUT") or 3600)
+REV = os.environ.get("MUTANTS_REV") or "HEAD"
 RESULT_COLUMNS = ["id", "size_pct", "status", "caught_by", "seconds", "files", "models"]
 
 
@@ -54,14 +58,14 @@ def load_mutants():
 
 
 def sync_scratch(src: Path):
-    """Make src hold exactly `git archive HEAD`, rewriting only changed files (keeps mtimes, so
+    """Make src hold exactly `git archive REV`, rewriting only changed files (keeps mtimes, so
     the build stays incremental)."""
     src.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
-        archive = subprocess.Popen(["git", "-C", str(ROOT), "archive", "HEAD"], stdout=subprocess.PIPE)
+        archive = subprocess.Popen(["git", "-C", str(ROOT), "archive", REV], stdout=subprocess.PIPE)
         subprocess.run(["tar", "-x", "-C", tmp], stdin=archive.stdout, check=True)
         if archive.wait() != 0:
-            sys.exit("git archive HEAD failed")
+            sys.exit(f"git archive {REV} failed")
         fresh = {p.relative_to(tmp) for p in Path(tmp).rglob("*") if p.is_file()}
         for rel in fresh:
             a, b = Path(tmp) / rel, src / rel
@@ -91,13 +95,15 @@ def run(cmd, log: Path, cwd=None, tmp: Path | None = None):
     return rc, out
 
 
-def build(src: Path, bld: Path, log: Path):
+def build(src: Path, bld: Path, log: Path, target=None):
+    """Configure and build (one target, or everything: the tests are built only when validate has
+    not caught the mutant, which saves recompiling every test that includes a mutated header)."""
     configure = ["cmake", "-S", str(src), "-B", str(bld), "-DCMAKE_BUILD_TYPE=Release"]
     if shutil.which("ccache"):
         configure.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
     rc, out = run(configure, log)
     if rc == 0:
-        rc, out2 = run(["cmake", "--build", str(bld), f"-j{JOBS}"], log)
+        rc, out2 = run(["cmake", "--build", str(bld), f"-j{JOBS}"] + (["--target", target] if target else []), log)
         out += out2
         log.write_text(out)
     return rc == 0
@@ -146,7 +152,7 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
     for f, t in mutated.items():
         (src / f).write_text(t)
     try:
-        if not build(src, bld, logs / f"{m['id']}.build.log"):
+        if not build(src, bld, logs / f"{m['id']}.build.log", "granmix"):
             return "build-failed", f"see {logs / (m['id'] + '.build.log')}"
         with tempfile.TemporaryDirectory(prefix="granmix-mutant-") as out_dir:
             rc, _ = run([str(bld / "granmix"), "validate", "--fidelity", "quick", "--out", out_dir, "--threads", str(JOBS),
@@ -155,6 +161,8 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
                 why = validate_failures(Path(out_dir)) or ["(no failing row)"]
                 note = "timeout" if rc is None else ("" if rc == 1 else f"exit {rc}")
                 return "caught", "validate: " + " ".join(why) + (f" [{note}]" if note else "")
+        if not build(src, bld, logs / f"{m['id']}.build-tests.log"):
+            return "build-failed", f"tests: see {logs / (m['id'] + '.build-tests.log')}"
         rc, out = run(["ctest", "-j", str(JOBS)], logs / f"{m['id']}.ctest.log", cwd=bld, tmp=bld.parent / "tmp")
         if rc != 0:
             return "caught", "ctest: " + (" | ".join(ctest_failures(out)) or ("timeout" if rc is None else f"exit {rc}"))
@@ -229,8 +237,8 @@ def main():
         sys.exit(check(mutants))
     with open(HERE / "mutants.toml", "rb") as f:
         order = [m["id"] for m in tomllib.load(f)["mutant"]]
-    sha = git("rev-parse", "HEAD")
-    if git("status", "--porcelain", "--untracked-files=no"):
+    sha = git("rev-parse", REV)
+    if REV == "HEAD" and git("status", "--porcelain", "--untracked-files=no"):
         print(f"mutants: note: uncommitted changes are not tested (scratch = git archive {sha[:10]})", flush=True)
     key = hashlib.sha1(str(ROOT).encode()).hexdigest()[:8]
     scratch = Path(os.environ.get("MUTANTS_SCRATCH") or Path(tempfile.gettempdir()) / f"granmix-mutants-{key}")
@@ -238,7 +246,7 @@ def main():
     logs.mkdir(parents=True, exist_ok=True)
     print(f"mutants: {len(mutants)} mutants, scratch {scratch}, JOBS={JOBS}", flush=True)
     sync_scratch(src)
-    if not build(src, bld, logs / "pristine.build.log"):
+    if not build(src, bld, logs / "pristine.build.log", "granmix"):
         sys.exit(f"mutants: the unmutated tree does not build (see {logs / 'pristine.build.log'})")
     date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
     provenance = f"# granmix mutants: git {sha} date {date} validate --fidelity quick, then ctest"
@@ -252,7 +260,6 @@ def main():
         print(f"[{i}/{len(mutants)}] {m['id']:<24} {status:<12} {rows[m['id']]['seconds']:>5} s  {fmt_caught_by(caught_by)}", flush=True)
         write_results(list(rows.values()), provenance, order)
     print(write_results(list(rows.values()), provenance, order))
-    build(src, bld, logs / "pristine.build.log")  # leave the scratch build unmutated for the next run
 
 
 if __name__ == "__main__":
