@@ -10,7 +10,7 @@ FUZZ_SECONDS ?= 300
 # property), plus the fuzz-corpus replay.
 SANITIZE_LABELS ?= model|theory|compare|hard|property|fuzz
 
-.PHONY: deps build test validate figures bench sanitize fuzz clean
+.PHONY: deps build test validate figures bench sanitize fuzz mutants clean
 
 deps:
 	@scripts/install-deps.sh
@@ -45,6 +45,12 @@ fuzz: deps
 	  -DGRANMIX_FUZZ=ON > /dev/null
 	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target fuzz_scene fuzz_hcs_args fuzz_tsv_roundtrip
 	@scripts/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
+
+# The mutation harness (tests/mutants/, not run by CI): plants each bug of mutants.toml in a scratch
+# copy of HEAD, rebuilds, runs validate --fidelity quick and ctest. MUTANTS=id1,id2 runs a subset.
+mutants: deps
+	@command -v python3 > /dev/null || { echo "make mutants: python3 (3.11+) is needed; scripts/install-deps.sh installs it"; exit 2; }
+	JOBS=$(JOBS) nice -n 10 python3 tests/mutants/run_mutants.py
 
 clean:
 	rm -rf $(BUILD) $(OUT) $(SANITIZE_BUILD) $(FUZZ_BUILD)

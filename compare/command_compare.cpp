@@ -1,5 +1,5 @@
 // granmix compare SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
-// granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N]
+// granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N] (also DIR/index.html)
 // (design.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
 #include <algorithm>
 #include <cstdio>
@@ -7,6 +7,7 @@
 
 #include "commands.hpp"
 #include "interrupts.hpp"
+#include "html_report.hpp"
 #include "model/errors.hpp"
 #include "scene_compare.hpp"
 #include "summary_table.hpp"
@@ -82,8 +83,9 @@ std::function<int()> add_validate_command(CLI::App& app) {
                                "/, no summary");
     }
     {
-      interrupts::WriteGuard g;  // summary.tsv and summary.json together
+      interrupts::WriteGuard g;  // summary.tsv, summary.json and index.html together
       write_summary(o->out, all, errors);
+      write_html_report(o->out);
     }
     const bool pass = errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& s) { return s.pass; });
     std::printf("validate (%s): %zu scenes, %s -> %s/summary.tsv, summary.json\n", o->fidelity.c_str(), files.size(),

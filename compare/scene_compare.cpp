@@ -35,6 +35,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   nlohmann::ordered_json j;
   j["scene"] = s.name;
   j["source"] = s.source;
+  j["title"] = s.title;
   j["pass"] = o.pass;
   j["quantities"] = nlohmann::ordered_json::object();
   for (const auto& q : o.quantities) {

@@ -16,6 +16,8 @@ packages=(
   libfmt-dev
   nlohmann-json3-dev
   libpcg-cpp-dev       # random streams for DSMC
+  python3              # make mutants (tests/mutants/run_mutants.py, standard library only)
+  ccache               # make mutants rebuilds incrementally
 )
 if [ "${1:-}" = "--fuzz" ]; then  # make fuzz only: libFuzzer and the clang sanitizer runtimes
   packages=(clang libclang-rt-dev)
