@@ -54,15 +54,5 @@ std::vector<double> msd_from_memory(const std::vector<double>& t, const std::vec
   return M;
 }
 
-std::pair<double, double> jackknife(std::size_t R, const std::function<double(std::size_t)>& f) {
-  const double all = f(static_cast<std::size_t>(-1));
-  if (R < 2) return {all, 0.0};
-  std::vector<double> loo(R);
-  double mean = 0.0;
-  for (std::size_t r = 0; r < R; ++r) loo[r] = f(r), mean += loo[r] / double(R);
-  double s = 0.0;
-  for (double v : loo) s += (v - mean) * (v - mean);
-  return {all, std::sqrt(s * double(R - 1) / double(R))};
-}
 
 }  // namespace granmix::bench

@@ -1,4 +1,5 @@
 #pragma once
+#include "dsmc/ensemble.hpp"
 // The tagged-particle velocity memory (physics-beyond.md §2): Q = ⟨R·v⟩ obeys
 //   dQ/dt = ⟨v²⟩ − ν Q,  dM/dt = 2Q  (M = ⟨R²⟩, Q(0) = M(0) = 0),
 // where ⟨v²⟩ = 3T_k/m_k is exact (free flight between collisions) and ν is whatever the collisions do
@@ -24,8 +25,7 @@ double effective_rate(const std::vector<double>& t, const std::vector<double>& v
 // taken as ballistic (M = ⟨v²⟩ t², Q = ⟨v²⟩ t): the grid must start at ν t[0] ≪ 1.
 std::vector<double> msd_from_memory(const std::vector<double>& t, const std::vector<double>& v2, const std::vector<double>& nu);
 
-// Jackknife over R replicas: value of f(excluded = none) and the standard error from the R
-// leave-one-out values (f gets the index of the replica left out, or none = std::size_t(-1)).
-std::pair<double, double> jackknife(std::size_t R, const std::function<double(std::size_t)>& f);
+// Jackknife over R replicas: the DSMC's own (f gets the replica left out, or npos for none).
+using dsmc::jackknife;
 
 }  // namespace granmix::bench

@@ -70,13 +70,13 @@ struct Estimate {
 };
 
 // A quantity derived from replica means, f(skip) = its value from the means without replica `skip`
-// (f(R): all replicas), with the jackknife standard error sqrt((R−1)/R Σ (f(r) − f̄)²). For a
+// (skip = npos, or any skip >= R: all replicas), with the jackknife standard error sqrt((R−1)/R Σ (f(r) − f̄)²). For a
 // linear f it is exactly the standard error of the mean; for ratios and weighted sums of species it
 // keeps the correlations between the parts (species trade energy; an MSD increment shares its
 // endpoints' noise) that propagation "as if independent" gets wrong.
 template <class F>
 std::pair<double, double> jackknife(std::size_t R, F f) {
-  const double all = f(R);
+  const double all = f(static_cast<std::size_t>(-1));
   if (R < 2) return {all, 0.0};
   std::vector<double> loo(R);
   double m = 0.0;
