@@ -3,8 +3,9 @@
 // chooses one with `[theory] level`; every curve of theory.tsv is computed through it.
 //   paper    the papers' closure: Maxwellian cooling rates (v1 A2), the scene's MSD form (v1 Eq. 17 by
 //            default), D_k = T_k τ_v,k/m_k (v1 Eq. 19 = the first-Sonine D, physics-beyond §1).
-//   kinetic  the exact first-Sonine MSD (the velocity-autocorrelation ODE, the tagged velocity decaying
-//            at ν_k; physics-beyond §2) with the level's diffusion coefficient and cooling rates.
+//   kinetic  first-Sonine (Garzó–Dufty) cooling rates with relaxing cumulants (physics-beyond §4), the MSD
+//            by the velocity-autocorrelation ODE (§2) decaying at ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], i.e. the
+//            second-Sonine D at long times (§3), settled states of the first-Sonine HCS (MG App. A).
 // A level is a type, chosen once per scene: the code that computes curves never asks which it is.
 #include <memory>
 #include <string>
