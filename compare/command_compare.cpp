@@ -29,6 +29,12 @@ void add_run_options(CLI::App* cmd, RunOptions& o) {
   cmd->add_option("--threads", o.threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
 }
 
+dsmc::RunOptions run_options(const RunOptions& o) {
+  dsmc::RunOptions r;
+  r.fidelity = o.fidelity, r.seed = o.seed, r.threads = o.threads;
+  return r;
+}
+
 std::filesystem::path default_scenes() {
   if (std::filesystem::is_directory("compare/scenes")) return "compare/scenes";
   return std::filesystem::path(GRANMIX_SOURCE_DIR) / "compare" / "scenes";
@@ -46,7 +52,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const model::Scene s = model::load_scene(*scene);
-    const SceneOutcome r = compare_scene(s, o->out, o->fidelity, o->seed, o->threads);
+    const SceneOutcome r = compare_scene(s, o->out, run_options(*o));
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
     std::printf("-> %s/%s/ (%s)\n", o->out.c_str(), s.name.c_str(), r.figure.c_str());
     return r.pass ? 0 : 1;
@@ -72,7 +78,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     std::printf("%s", summary_header().c_str());
     for (const auto& f : files) {
       try {
-        all.push_back(compare_scene(model::load_scene(f.string()), o->out, o->fidelity, o->seed, o->threads));
+        all.push_back(compare_scene(model::load_scene(f.string()), o->out, run_options(*o)));
         std::printf("%s", summary_lines(all.back()).c_str());
       } catch (const std::exception& e) {  // one broken scene fails the run but not the others
         errors.push_back(f.filename().string() + ": " + e.what());

@@ -12,7 +12,7 @@
 #include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
-#include "sha256.hpp"
+#include "model/sha256.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -33,10 +33,10 @@ int run(const DsmcOptions& o) {
   auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\r%s: replica %zu/%zu done", s.name.c_str(), done, total);
   };
-  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, o.fidelity, o.seed, o.threads, progress);
+  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, {o.fidelity, o.seed, o.threads, progress});
   if (tty) std::fprintf(stderr, "\n");
   Provenance p;
-  p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = sha256_hex(s.text), p.command = command_line();
+  p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
   p.seed = std::to_string(o.seed) + " (replica r uses stream (seed, r))";
   p.fidelity = o.fidelity;
   const std::filesystem::path file = std::filesystem::path(o.out) / s.name / "dsmc.tsv";

@@ -5,7 +5,7 @@
 #include "commands.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
-#include "sha256.hpp"
+#include "model/sha256.hpp"
 #include "theory/scene_theory.hpp"
 #include "tsv_writer.hpp"
 
@@ -22,7 +22,7 @@ std::function<int()> add_theory_command(CLI::App& app) {
     const model::Scene s = model::load_scene(*scene);
     const theory::TheoryResult r = theory::run_theory(s);
     Provenance p;
-    p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = sha256_hex(s.text), p.command = command_line();
+    p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
     const std::filesystem::path file = std::filesystem::path(*out) / s.name / "theory.tsv";
     write_atomically(file, format_tsv(provenance_header(p), r.table));
     std::printf("%s: %zu rows -> %s  (%.3f s; CVODE %ld steps, %ld RHS evaluations)\n", s.name.c_str(),

@@ -10,7 +10,7 @@
 #include "dsmc/scene_dsmc.hpp"
 #include "gnuplot_figure.hpp"
 #include "provenance.hpp"
-#include "sha256.hpp"
+#include "model/sha256.hpp"
 #include "theory/scene_theory.hpp"
 #include "interrupts.hpp"
 #include "tsv_writer.hpp"
@@ -65,8 +65,9 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
 
 }  // namespace
 
-SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const std::string& fidelity, std::uint64_t seed,
-                           int threads) {
+SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const dsmc::RunOptions& opt) {
+  const std::string& fidelity = opt.fidelity;
+  const std::uint64_t seed = opt.seed;
   SceneOutcome o;
   o.scene = s.name;
   const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
@@ -79,7 +80,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
   }
   try {
     Provenance p;
-    p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = sha256_hex(s.text), p.command = command_line();
+    p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
     const theory::TheoryResult th = theory::run_theory(s);
     o.theory_seconds = th.seconds;
     {  // error estimate: the same scene at 100× tighter tolerance (design: speed against error)
@@ -91,7 +92,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     const model::Table* dsmc_table = nullptr;
     dsmc::DsmcRun run;
     if (s.dsmc.present) {
-      run = dsmc::run_scene_dsmc(s, fidelity, seed, threads);
+      run = dsmc::run_scene_dsmc(s, opt);
       Provenance pd = p;
       pd.seed = std::to_string(seed) + " (replica r uses stream (seed, r))", pd.fidelity = fidelity;
       write_atomically(tmp / "dsmc.tsv", format_tsv(provenance_header(pd), run.table));

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "deviations.hpp"
+#include "dsmc/scene_dsmc.hpp"
 #include "model/scene.hpp"
 
 namespace granmix::compare {
@@ -23,7 +24,7 @@ struct SceneOutcome {
   std::string figure;
 };
 
-SceneOutcome compare_scene(const model::Scene& scene, const std::filesystem::path& out, const std::string& fidelity, std::uint64_t seed,
-                           int threads);
+// run: fidelity, seed, threads and, under MPI or with checkpoints, where replicas come from.
+SceneOutcome compare_scene(const model::Scene& scene, const std::filesystem::path& out, const dsmc::RunOptions& run);
 
 }  // namespace granmix::compare

@@ -38,13 +38,6 @@ std::vector<std::size_t> counts_for(const model::Mixture& mix, std::size_t total
 
 namespace {
 
-// Everything one replica records, [time * M + k].
-struct ReplicaRecord {
-  std::vector<double> T, msd, cumulant, species_collisions, pair_collisions, rescaled_time, tamsd, distribution;
-  std::uint64_t trials = 0, accepted = 0, steps = 0;
-  double seconds_setup = 0.0, seconds_loop = 0.0, seconds_sample = 0.0;
-};
-
 // Seconds since `since`, and restart it.
 double lap(std::chrono::steady_clock::time_point& since) {
   const auto now = std::chrono::steady_clock::now();
@@ -235,9 +228,15 @@ Estimate reduce(const std::vector<ReplicaRecord>& recs, std::vector<double> Repl
   return e;
 }
 
-}  // namespace
+// What every replica of a set-up shares: the volume, the pair table and the method.
+struct Geometry {
+  std::size_t N = 0;
+  double V = 0.0;
+  PairTable pairs;
+  Method method;
+};
 
-DsmcResult run_ensemble(const DsmcSetup& s) {
+Geometry geometry(const DsmcSetup& s) {
   const std::size_t M = s.mixture.size();
   if (s.counts.size() != M || s.T0.size() != M) throw std::invalid_argument("DSMC: one count and one T per species");
   if (s.replicas == 0) throw std::invalid_argument("DSMC: at least one replica");
@@ -246,9 +245,30 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   // V from the total: n = N / V. Species densities are then N_k / V (counts_for keeps them
   // proportional to the mixture's n_k up to rounding).
   const double V = double(N) / s.mixture.total_density();
-  const PairTable pairs(s.mixture, s.chi, V);  // empty chi: dilute
   const Method method = s.method == Method::automatic ? (M <= 8 ? Method::direct : Method::lowrank) : s.method;
+  return {N, V, PairTable(s.mixture, s.chi, V), method};  // empty chi: dilute
+}
 
+ReplicaRecord compute_replica(const DsmcSetup& s, const Geometry& g, std::size_t r) {
+  switch (g.method) {
+    case Method::direct: return run_replica<DirectSelector>(s, g.pairs, r);
+    case Method::lowrank: return run_replica<LowRankSelector>(s, g.pairs, r);
+    case Method::timestep: return run_time_step_replica(s, g.pairs, r);
+    case Method::bird_global: return run_replica<GlobalBirdSelector>(s, g.pairs, r);
+    default: return run_replica<BirdSelector>(s, g.pairs, r);
+  }
+}
+
+}  // namespace
+
+ReplicaRecord run_one_replica(const DsmcSetup& s, std::size_t r) { return compute_replica(s, geometry(s), r); }
+
+DsmcResult run_ensemble(const DsmcSetup& s) {
+  const std::size_t M = s.mixture.size();
+  const Geometry g = geometry(s);
+  const std::size_t N = g.N;
+  const double V = g.V;
+  const Method method = g.method;
   std::vector<ReplicaRecord> recs(s.replicas);
   const auto t0 = std::chrono::steady_clock::now();
   const int threads = s.threads > 0 ? s.threads : omp_get_max_threads();
@@ -257,13 +277,8 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::size_t r = 0; r < s.replicas; ++r) {
     try {
-      switch (method) {
-        case Method::direct: recs[r] = run_replica<DirectSelector>(s, pairs, r); break;
-        case Method::lowrank: recs[r] = run_replica<LowRankSelector>(s, pairs, r); break;
-        case Method::timestep: recs[r] = run_time_step_replica(s, pairs, r); break;
-        case Method::bird_global: recs[r] = run_replica<GlobalBirdSelector>(s, pairs, r); break;
-        default: recs[r] = run_replica<BirdSelector>(s, pairs, r); break;
-      }
+      const ReplicaRecord* found = s.source ? s.source->find(s.unit_key, r) : nullptr;
+      recs[r] = found ? *found : compute_replica(s, g, r);
     } catch (...) {
 #pragma omp critical
       failure = std::current_exception();

@@ -5,6 +5,7 @@
 // replica order.
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <utility>
@@ -12,8 +13,24 @@
 
 #include "model/mixture.hpp"
 #include "model/restitution.hpp"
+#include "replica_record.hpp"
 
 namespace granmix::dsmc {
+
+// Replica records computed elsewhere, by another MPI rank (compare/scheduler.hpp): run_ensemble takes
+// replica r of a set-up from here when the source has it, and computes it otherwise.
+class ReplicaSource {
+ public:
+  virtual ~ReplicaSource() = default;
+  virtual const ReplicaRecord* find(const std::string& unit_key, std::size_t replica) const = 0;
+};
+
+// Snapshots of replicas in flight, written into `dir` every `every_seconds` of wall time, and resumed
+// from there (issue 14: a run killed by a batch queue loses at most one interval).
+struct Checkpointing {
+  std::filesystem::path dir;
+  double every_seconds = 600.0;
+};
 
 enum class Method { automatic, direct, lowrank, bird, timestep, bird_global };
 Method parse_method(const std::string& name);  // throws std::invalid_argument
@@ -52,6 +69,12 @@ struct DsmcSetup {
   std::uint64_t seed = 1;
   std::size_t replicas = 1;
   int threads = 0;  // 0: all cores
+  // Names this set-up's units of work (replicas) for the scheduler and the checkpoints: scene hash,
+  // fidelity, seed of the run (scene_dsmc.cpp). Empty: an anonymous set-up (tests, benchmarks), which
+  // is always computed here and never checkpointed. `scene_sha256` is checked against snapshots.
+  std::string unit_key, scene_sha256;
+  const ReplicaSource* source = nullptr;          // none: every replica computed here
+  const Checkpointing* checkpoint = nullptr;      // none: no snapshots
   std::function<void(std::size_t done, std::size_t total)> progress;  // called as replicas finish
 };
 
@@ -119,6 +142,9 @@ struct DsmcResult {
 };
 
 DsmcResult run_ensemble(const DsmcSetup& setup);
+
+// Replica r of a set-up alone, as run_ensemble computes it (the unit of work an MPI rank runs).
+ReplicaRecord run_one_replica(const DsmcSetup& setup, std::size_t r);
 
 // Particles per species for a total N, proportional to the number densities (rounded).
 std::vector<std::size_t> counts_for(const model::Mixture& mix, std::size_t total);

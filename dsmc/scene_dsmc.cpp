@@ -6,6 +6,7 @@
 #include "distribution_table.hpp"
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
+#include "model/sha256.hpp"
 #include "theory/initial_state.hpp"
 #include "theory/scene_theory.hpp"
 #include "theory/tracer_limit.hpp"
@@ -79,14 +80,31 @@ std::pair<double, double> cell(const Table& t, std::size_t row, const std::strin
   return {t.rows[row][c], t.rows[row][c + 1]};
 }
 
+// γ(n*)/γ(0) sweeps run an extra n* = 0 reference with the master seed.
+bool has_reference_run(const model::Scene& s) {
+  return s.observables.gamma && s.theory.sweep->parameter == model::Sweep::Parameter::n_star;
+}
+
+// Each sweep point has its own seed derived from the master seed: point n, seed + 1000003 (n + 1).
+std::uint64_t point_seed(std::uint64_t seed, std::size_t n) { return seed + 1000003 * (n + 1); }
+
+// One HCS run at a value x of the swept parameter, from the settled ratios.
+model::Scene sweep_point_scene(const model::Scene& s, double x) {
+  const auto& o = s.observables;
+  model::Scene point = model::sweep_point(s, x);
+  point.initial.kind = model::InitialState::Kind::hcs;
+  point.observables = model::Observables{};
+  point.observables.gamma = o.gamma, point.observables.msd = o.d_ratio, point.observables.cumulant = o.cumulant;
+  return point;
+}
+
 }  // namespace
 
-DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
-                       const std::function<void(std::size_t, std::size_t)>& progress) {
+DsmcRun run_sweep_dsmc(const model::Scene& s, const RunOptions& opt) {
   const model::Sweep& sw = *s.theory.sweep;
   const auto& o = s.observables;
   const std::size_t M = s.mixture.size();
-  const bool relative = o.gamma && sw.parameter == model::Sweep::Parameter::n_star;
+  const bool relative = has_reference_run(s);
   DsmcRun out;
   Table& t = out.table;
   t.columns = {sw.column(), "species"};
@@ -96,14 +114,10 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
   if (relative) add("gamma_ratio");
   if (o.cumulant) add("c");
   const double nan = Table::missing;
-  // One HCS run at a value of the parameter, from the settled ratios; each point its own seed derived
-  // from the master seed (point n: seed + 1000003 (n + 1); the n* = 0 reference of gamma_ratio: seed).
   auto run_at = [&](double x, std::uint64_t point_seed) {
-    model::Scene point = model::sweep_point(s, x);
-    point.initial.kind = model::InitialState::Kind::hcs;
-    point.observables = model::Observables{};
-    point.observables.gamma = o.gamma, point.observables.msd = o.d_ratio, point.observables.cumulant = o.cumulant;
-    const DsmcRun r = run_scene_dsmc(point, fidelity, point_seed, threads, progress);
+    RunOptions point_opt = opt;
+    point_opt.seed = point_seed;
+    const DsmcRun r = run_scene_dsmc(sweep_point_scene(s, x), point_opt);
     DsmcResult& a = out.result;
     a.method = r.result.method, a.species = M, a.replicas = r.result.replicas, a.particles = r.result.particles;
     a.trials += r.result.trials, a.accepted += r.result.accepted, a.seconds += r.result.seconds;
@@ -114,12 +128,12 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
   auto row_of = [&](std::size_t start, std::size_t k) { return start + (M > 1 ? k : k - 1); };
   std::pair<double, double> gamma0{nan, nan};
   if (relative) {
-    const DsmcRun r0 = run_at(0.0, seed);
+    const DsmcRun r0 = run_at(0.0, opt.seed);
     gamma0 = cell(r0.table, row_of(r0.table.rows.size() - per_time, 0), "gamma");
   }
   for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) {
     const double x = s.dsmc.at[n];
-    const DsmcRun r = run_at(x, seed + 1000003 * (n + 1));
+    const DsmcRun r = run_at(x, point_seed(opt.seed, n));
     const std::size_t last = r.table.rows.size() - per_time;
     const std::size_t J = r.setup.times.size();
     for (std::size_t k = (o.gamma ? 0 : 1); k <= M; ++k) {
@@ -146,15 +160,12 @@ DsmcRun run_sweep_dsmc(const model::Scene& s, const std::string& fidelity, std::
   return out;
 }
 
-DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads,
-                       const std::function<void(std::size_t, std::size_t)>& progress) {
-  if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
-  if (s.theory.sweep) return run_sweep_dsmc(s, fidelity, seed, threads, progress);
+DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
+  const std::string& fidelity = opt.fidelity;
   if (s.observables.d_ratio)
     throw InputError(s.file + ": DSMC does not measure d_ratio (allowed: temperatures, msd, cumulant, gamma, rescaled_time, tamsd)");
   const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
-  DsmcRun run;
-  DsmcSetup& d = run.setup;
+  DsmcSetup d;
   d.mixture = s.mixture;
   d.law = s.restitution;
   if (s.enskog) d.chi = model::enskog_contact_values(s.mixture);
@@ -193,10 +204,25 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
     d.tamsd_lags = d.times;
     d.tamsd_tracers = s.observables.tamsd_tracers;
   }
-  d.seed = seed;
+  d.seed = opt.seed;
   d.replicas = f.replicas;
-  d.threads = threads;
-  d.progress = progress;
+  d.threads = opt.threads;
+  d.progress = opt.progress;
+  d.scene_sha256 = model::sha256_hex(s.text);
+  // Scene, fidelity and seed name the run: a sweep point's seed is its own (point_seed).
+  d.unit_key = s.name + "." + fidelity + ".seed" + std::to_string(opt.seed) + "." + d.scene_sha256.substr(0, 12);
+  d.source = opt.source, d.checkpoint = opt.checkpoint;
+  return d;
+}
+
+DsmcRun run_scene_dsmc(const model::Scene& s, const RunOptions& opt) {
+  if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
+  if (s.theory.sweep) return run_sweep_dsmc(s, opt);
+  DsmcRun run;
+  DsmcSetup& d = run.setup;
+  d = scene_setup(s, opt);
+  const bool settled_distribution = s.observables.distribution_settled;
+  const double unit = theory::scene_time_unit(s);
   run.result = run_ensemble(d);
   if (settled_distribution) {
     run.table = settled_distribution_table(s, d, run.result);
@@ -217,6 +243,20 @@ DsmcRun run_scene_dsmc(const model::Scene& s, const std::string& fidelity, std::
         }
   }
   return run;
+}
+
+std::vector<DsmcSetup> plan_scene_dsmc(const model::Scene& s, const RunOptions& opt) {
+  if (!s.dsmc.present) return {};
+  if (!s.theory.sweep) return {scene_setup(s, opt)};
+  std::vector<DsmcSetup> setups;
+  auto add = [&](double x, std::uint64_t seed) {
+    RunOptions point_opt = opt;
+    point_opt.seed = seed;
+    setups.push_back(scene_setup(sweep_point_scene(s, x), point_opt));
+  };
+  if (has_reference_run(s)) add(0.0, opt.seed);
+  for (std::size_t n = 0; n < s.dsmc.at.size(); ++n) add(s.dsmc.at[n], point_seed(opt.seed, n));
+  return setups;
 }
 
 }  // namespace granmix::dsmc

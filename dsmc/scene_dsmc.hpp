@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "ensemble.hpp"
 #include "model/scene.hpp"
@@ -19,13 +20,26 @@ struct DsmcRun {
   DsmcSetup setup;
 };
 
-// fidelity: "quick" or "paper". progress(done, total) is called as replicas finish.
-DsmcRun run_scene_dsmc(const model::Scene& scene, const std::string& fidelity, std::uint64_t seed, int threads,
-                       const std::function<void(std::size_t, std::size_t)>& progress = {});
+// How a scene's DSMC runs: fidelity "quick" or "paper" (particles, replicas of the scene's [dsmc]),
+// master seed, threads, progress(done, total) as replicas finish; replicas already computed by other
+// MPI ranks (source) and checkpointing (issue 14), both optional.
+struct RunOptions {
+  std::string fidelity = "quick";
+  std::uint64_t seed = 1;
+  int threads = 0;
+  std::function<void(std::size_t, std::size_t)> progress;
+  const ReplicaSource* source = nullptr;
+  const Checkpointing* checkpoint = nullptr;
+};
+
+DsmcRun run_scene_dsmc(const model::Scene& scene, const RunOptions& options);
 
 // Sweep scenes: one settled-state run per value in dsmc.at; rows (x, species) with D_ratio, gamma,
 // c and their errors, in the long form of the theory sweep table.
-DsmcRun run_sweep_dsmc(const model::Scene& scene, const std::string& fidelity, std::uint64_t seed, int threads,
-                       const std::function<void(std::size_t, std::size_t)>& progress = {});
+DsmcRun run_sweep_dsmc(const model::Scene& scene, const RunOptions& options);
+
+// Every ensemble the scene's DSMC runs (one, or one per sweep point and the n* = 0 reference), set up
+// exactly as run_scene_dsmc sets them up: the units of work a scheduler hands out before the run.
+std::vector<DsmcSetup> plan_scene_dsmc(const model::Scene& scene, const RunOptions& options);
 
 }  // namespace granmix::dsmc

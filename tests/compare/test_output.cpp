@@ -5,18 +5,18 @@
 #include <limits>
 #include <sstream>
 
-#include "compare/sha256.hpp"
+#include "model/sha256.hpp"
 #include "compare/tsv_writer.hpp"
 #include "run_cli.hpp"
 
 using namespace granmix;
 
 TEST_CASE("SHA-256 of the FIPS 180-4 test vectors", "[compare]") {
-  CHECK(compare::sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  CHECK(compare::sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
-  CHECK(compare::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
+  CHECK(model::sha256_hex("") == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(model::sha256_hex("abc") == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  CHECK(model::sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq") ==
         "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
-  CHECK(compare::sha256_hex(std::string(1000, 'a')).size() == 64);  // multi-block message
+  CHECK(model::sha256_hex(std::string(1000, 'a')).size() == 64);  // multi-block message
 }
 
 TEST_CASE("TSV: provenance - one header line - full-precision numbers - nan", "[compare]") {

@@ -4,8 +4,8 @@
 #include <string>
 #include <string_view>
 
-namespace granmix::compare {
+namespace granmix::model {
 
 std::string sha256_hex(std::string_view data);
 
-}  // namespace granmix::compare
+}  // namespace granmix::model

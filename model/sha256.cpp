@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-namespace granmix::compare {
+namespace granmix::model {
 
 namespace {
 
@@ -55,4 +55,4 @@ std::string sha256_hex(std::string_view data) {
   return out;
 }
 
-}  // namespace granmix::compare
+}  // namespace granmix::model
