@@ -10,6 +10,7 @@
 #include "html_report.hpp"
 #include "model/errors.hpp"
 #include "scene_compare.hpp"
+#include "scheduler.hpp"
 #include "summary_table.hpp"
 
 namespace granmix::compare {
@@ -52,7 +53,11 @@ std::function<int()> add_compare_command(CLI::App& app) {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const model::Scene s = model::load_scene(*scene);
-    const SceneOutcome r = compare_scene(s, o->out, run_options(*o));
+    dsmc::RunOptions run = run_options(*o);
+    const scheduler::GatheredReplicas replicas = scheduler::run_units(dsmc::plan_scene_dsmc(s, run), o->threads);
+    if (!scheduler::root()) return 0;  // rank 0 writes every file
+    run.source = &replicas;
+    const SceneOutcome r = compare_scene(s, o->out, run);
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
     std::printf("-> %s/%s/ (%s)\n", o->out.c_str(), s.name.c_str(), r.figure.c_str());
     return r.pass ? 0 : 1;
@@ -73,16 +78,36 @@ std::function<int()> add_validate_command(CLI::App& app) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
       if (e.path().extension() == ".toml") files.push_back(e.path());
     std::sort(files.begin(), files.end());
-    std::vector<SceneOutcome> all;
+    // Every scene loaded and its DSMC planned first, so that all replicas of all scenes are one pool of
+    // units for the scheduler (threads and MPI ranks); one broken scene fails the run but not the others.
+    std::vector<model::Scene> scenes;
     std::vector<std::string> errors;
-    std::printf("%s", summary_header().c_str());
+    std::vector<dsmc::DsmcSetup> setups;
+    dsmc::RunOptions run = run_options(*o);
+    auto report_error = [&](const std::filesystem::path& f, const std::exception& e) {
+      errors.push_back(f.filename().string() + ": " + e.what());
+      if (scheduler::root()) std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
+    };
     for (const auto& f : files) {
       try {
-        all.push_back(compare_scene(model::load_scene(f.string()), o->out, run_options(*o)));
+        model::Scene s = model::load_scene(f.string());
+        for (auto& d : dsmc::plan_scene_dsmc(s, run)) setups.push_back(std::move(d));
+        scenes.push_back(std::move(s));
+      } catch (const std::exception& e) {
+        report_error(f, e);
+      }
+    }
+    const scheduler::GatheredReplicas replicas = scheduler::run_units(setups, o->threads);
+    if (!scheduler::root()) return 0;  // rank 0 writes every file
+    run.source = &replicas;
+    std::vector<SceneOutcome> all;
+    std::printf("%s", summary_header().c_str());
+    for (const auto& s : scenes) {
+      try {
+        all.push_back(compare_scene(s, o->out, run));
         std::printf("%s", summary_lines(all.back()).c_str());
-      } catch (const std::exception& e) {  // one broken scene fails the run but not the others
-        errors.push_back(f.filename().string() + ": " + e.what());
-        std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
+      } catch (const std::exception& e) {
+        report_error(s.file, e);
       }
       std::fflush(stdout);
       interrupts::set_finished(std::to_string(all.size()) + " of " + std::to_string(files.size()) + " scenes written to " + o->out +
@@ -90,7 +115,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     }
     {
       interrupts::WriteGuard g;  // summary.tsv, summary.json and index.html together
-      write_summary(o->out, all, errors);
+      write_summary(o->out, all, errors, replicas);
       write_html_report(o->out);
     }
     const bool pass = errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& s) { return s.pass; });

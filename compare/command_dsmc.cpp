@@ -1,6 +1,6 @@
 // granmix dsmc SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
 //   -> DIR/<scene>/dsmc.tsv with mean and standard-error columns (design.md §3–4), and an
-//   end-of-run summary on stdout; a progress line on stderr when stderr is a terminal.
+//   end-of-run summary on stdout; a progress line on stderr (compare/scheduler.hpp).
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -12,6 +12,7 @@
 #include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
+#include "scheduler.hpp"
 #include "model/sha256.hpp"
 #include "tsv_writer.hpp"
 
@@ -29,12 +30,12 @@ int run(const DsmcOptions& o) {
   interrupts::install();
   interrupts::require_writable_folder(o.out);
   const model::Scene s = model::load_scene(o.scene);
-  const bool tty = isatty(STDERR_FILENO);
-  auto progress = [&](std::size_t done, std::size_t total) {
-    if (tty) std::fprintf(stderr, "\r%s: replica %zu/%zu done", s.name.c_str(), done, total);
-  };
-  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, {o.fidelity, o.seed, o.threads, progress});
-  if (tty) std::fprintf(stderr, "\n");
+  dsmc::RunOptions opt;
+  opt.fidelity = o.fidelity, opt.seed = o.seed, opt.threads = o.threads;
+  const scheduler::GatheredReplicas replicas = scheduler::run_units(dsmc::plan_scene_dsmc(s, opt), o.threads);
+  if (!scheduler::root()) return 0;  // rank 0 writes every file
+  opt.source = &replicas;
+  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, opt);
   Provenance p;
   p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
   p.seed = std::to_string(o.seed) + " (replica r uses stream (seed, r))";
@@ -55,8 +56,8 @@ int run(const DsmcOptions& o) {
               static_cast<unsigned long long>(r.trials));
   std::printf("  CPU by phase: set-up %.2f s, event loop (select + collide) %.2f s, sampling %.2f s\n", r.seconds_setup,
               r.seconds_loop, r.seconds_sample);
-  std::printf("  acceptance %.3f, %.3g collisions/s, wall %.2f s, peak memory %.1f MB\n", r.acceptance(),
-              r.collisions_per_second(), r.seconds, ru.ru_maxrss / 1024.0);
+  std::printf("  acceptance %.3f, %.3g collisions/s per core, wall %.2f s on %d rank(s) x %d thread(s), peak memory %.1f MB\n",
+              r.acceptance(), r.collisions_per_second(), replicas.wall_seconds, replicas.ranks, replicas.threads, ru.ru_maxrss / 1024.0);
   return 0;
 }
 

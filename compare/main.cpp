@@ -12,6 +12,7 @@
 #include "commands.hpp"
 #include "granmix_version.hpp"
 #include "model/errors.hpp"
+#include "scheduler.hpp"
 
 int main(int argc, char** argv) {
   using namespace granmix;
@@ -38,20 +39,24 @@ int main(int argc, char** argv) {
     app.exit(e);  // prints the message
     return 2;
   }
+  int code = 2;
   try {
-    for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub->get_name())();
+    for (const CLI::App* sub : app.get_subcommands()) code = actions.at(sub->get_name())();
+    compare::scheduler::finish();
+    return code;
   } catch (const InputError& e) {
     std::fprintf(stderr, "granmix: %s\n", e.what());
-    return 2;
+    code = 2;
   } catch (const std::invalid_argument& e) {  // a model constructor refused a value the user gave
     std::fprintf(stderr, "granmix: %s\n", e.what());
-    return 2;
+    code = 2;
   } catch (const NumericalError& e) {
     std::fprintf(stderr, "granmix: numerical failure: %s\n", e.what());
-    return 3;
+    code = 3;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "granmix: %s\n", e.what());
-    return 3;
+    code = 3;
   }
-  return 2;
+  compare::scheduler::abort(code);  // under MPI: every rank stops with this code
+  return code;
 }

@@ -29,7 +29,8 @@ std::string summary_lines(const SceneOutcome& o) {
   return s;
 }
 
-void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors) {
+void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors,
+                   const scheduler::GatheredReplicas& run) {
   std::string tsv = "# granmix validate summary (" + utc_now_iso8601() + ")\n";
   tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\t"
          "paper_max_rel\n";
@@ -53,7 +54,17 @@ void write_summary(const std::filesystem::path& out, const std::vector<SceneOutc
   }
   nlohmann::ordered_json summary = {{"pass", errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& o) { return o.pass; })},
                                     {"scenes", j},
-                                    {"errors", errors}};
+                                    {"errors", errors},
+                                    {"ranks", run.ranks},
+                                    {"threads", run.threads},
+                                    {"cpu_seconds", run.cpu_seconds},
+                                    {"dsmc_wall_seconds", run.wall_seconds},
+                                    {"dsmc_units", run.units.size()}};
+  std::string units = "# granmix validate: DSMC units, longest estimate first (" + utc_now_iso8601() + ")\n";
+  units += "unit\treplica\testimated_collisions\tcollisions\tseconds\trank\n";
+  for (const auto& u : run.units)
+    units += fmt::format("{}\t{}\t{:.6g}\t{}\t{:.6g}\t{}\n", u.key, u.replica, u.estimated_collisions, u.collisions, u.seconds, u.rank);
+  write_atomically(out / "units.tsv", units);
   write_atomically(out / "summary.tsv", tsv);
   write_atomically(out / "summary.json", summary.dump(2) + "\n");
 }

@@ -7,11 +7,15 @@
 #include <vector>
 
 #include "scene_compare.hpp"
+#include "scheduler.hpp"
 
 namespace granmix::compare {
 
 std::string summary_header();
 std::string summary_lines(const SceneOutcome& o);
-void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors);
+// Also units.tsv: every DSMC unit (one replica) with its estimated and actual collisions, CPU seconds
+// and rank, the input of `granmix bench schedule`; summary.json records ranks, threads, CPU seconds.
+void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors,
+                   const scheduler::GatheredReplicas& run);
 
 }  // namespace granmix::compare

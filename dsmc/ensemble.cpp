@@ -277,7 +277,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::size_t r = 0; r < s.replicas; ++r) {
     try {
-      const ReplicaRecord* found = s.source ? s.source->find(s.unit_key, r) : nullptr;
+      const ReplicaRecord* found = s.source && !s.unit_key.empty() ? s.source->find(s.unit_key, r) : nullptr;
       recs[r] = found ? *found : compute_replica(s, g, r);
     } catch (...) {
 #pragma omp critical
@@ -290,6 +290,8 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
 
   DsmcResult out;
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  // Replicas computed elsewhere (the scheduler's units): the ensemble's cost is their CPU time.
+  if (s.source) out.seconds = 0.0;
   out.method = method, out.species = M, out.times = s.times.size(), out.replicas = s.replicas, out.particles = N;
   out.volume = V;
   out.T = reduce(recs, &ReplicaRecord::T);
@@ -305,6 +307,7 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   for (const auto& r : recs) {
     out.trials += r.trials, out.accepted += r.accepted, out.steps += r.steps;
     out.seconds_setup += r.seconds_setup, out.seconds_loop += r.seconds_loop, out.seconds_sample += r.seconds_sample;
+    if (s.source) out.seconds += r.seconds_setup + r.seconds_loop + r.seconds_sample;
   }
   return out;
 }

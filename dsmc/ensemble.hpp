@@ -131,7 +131,7 @@ struct DsmcResult {
   Estimate species_collisions;   // [time * M + k]: collisions species k took part in (i = k twice), from t = 0
   Estimate pair_collisions;      // [time * M*M + i*M + k], i <= k, from t = 0; empty above 64 species
   std::uint64_t trials = 0, accepted = 0, steps = 0;  // steps: timestep method only
-  double seconds = 0.0;          // wall time of the ensemble
+  double seconds = 0.0;          // wall time of the ensemble; CPU seconds of its replicas when they came from a source
   // CPU time by phase, summed over replicas: particle set-up (and aging), the event loop (pair
   // selection and collisions together: timing them apart would put a clock read on every event),
   // and sampling of observables.

@@ -16,6 +16,7 @@ packages=(
   libfmt-dev
   nlohmann-json3-dev
   libpcg-cpp-dev       # random streams for DSMC
+  libopenmpi-dev openmpi-bin  # MPI: DSMC units over ranks (GRANMIX_MPI, compare/scheduler.cpp)
   python3              # make mutants (tests/mutants/run_mutants.py, standard library only)
   ccache               # make mutants rebuilds incrementally
 )
