@@ -175,16 +175,6 @@ TEST_CASE("granmix hcs: bad usage exits 2 with a message", "[compare]") {
   }
 }
 
-namespace {
-std::string data_lines(const std::filesystem::path& p) {
-  std::ifstream in(p);
-  std::string line, out;
-  while (std::getline(in, line))
-    if (line.rfind("#", 0) != 0) out += line + "\n";
-  return out;
-}
-}  // namespace
-
 TEST_CASE("granmix dsmc bo1-fig02: columns with errors and identical data for 1 and 2 threads", "[compare][dsmc]") {
   const auto d = test::fresh_dir("dsmc");
   const std::string scene = test::scene_path("bo1-fig02.toml");
@@ -199,9 +189,9 @@ TEST_CASE("granmix dsmc bo1-fig02: columns with errors and identical data for 1 
   CHECK(t.comments[2].find("# seed: 3") == 0);
   CHECK(t.comments[3] == "# fidelity: quick");
   // Provenance differs (command, date); the numbers must not (design.md §5).
-  CHECK(data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv") == data_lines(d / "b" / "bo1-fig02" / "dsmc.tsv"));
+  CHECK(test::data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv") == test::data_lines(d / "b" / "bo1-fig02" / "dsmc.tsv"));
   const auto c = test::run_granmix("dsmc " + scene + " --out " + (d / "c").string() + " --seed 4");
-  CHECK(data_lines(d / "c" / "bo1-fig02" / "dsmc.tsv") != data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv"));
+  CHECK(test::data_lines(d / "c" / "bo1-fig02" / "dsmc.tsv") != test::data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv"));
 }
 
 TEST_CASE("granmix dsmc refuses scenes it cannot simulate with exit 2", "[compare][dsmc]") {

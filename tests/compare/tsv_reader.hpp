@@ -9,6 +9,15 @@
 
 namespace granmix::test {
 
+// A file without its '#' lines (provenance: date and command differ between runs; the data must not).
+inline std::string data_lines(const std::filesystem::path& p) {
+  std::ifstream in(p);
+  std::string line, out;
+  while (std::getline(in, line))
+    if (line.rfind("#", 0) != 0) out += line + "\n";
+  return out;
+}
+
 struct Tsv {
   std::vector<std::string> comments, columns;
   std::vector<std::vector<double>> rows;
