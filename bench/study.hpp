@@ -4,6 +4,7 @@
 // command_bench.cpp writes the TSV with provenance, the gnuplot figure and the JSON lines.
 // Speed is measured here, never asserted in tests.
 #include <cstddef>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <utility>
@@ -34,6 +35,8 @@ struct StudyOptions {
   bool quick = false;  // smaller systems: a smoke run for tests and CI
   std::uint64_t seed = 1;
   std::function<void(const std::string&)> progress;  // one line per finished case
+  std::filesystem::path units_file = "out/units.tsv";  // schedule: measured units of a validate run
+  std::filesystem::path scenes_folder;                 // schedule: the scenes whose paper fidelity is simulated
 };
 
 StudyResult selectors_study(const StudyOptions& o);
@@ -41,6 +44,7 @@ StudyResult theory_study(const StudyOptions& o);
 StudyResult dsmc_error_study(const StudyOptions& o);
 StudyResult methods_study(const StudyOptions& o);
 StudyResult gaps_study(const StudyOptions& o);  // issue 12: causes of the theory–DSMC gaps
+StudyResult schedule_study(const StudyOptions& o);  // issue 14: makespan on 1–256 ranks from measured units
 
 // Study names in the order `granmix bench` runs them.
 const std::vector<std::string>& study_names();

@@ -20,7 +20,7 @@ namespace granmix::compare {
 namespace {
 
 struct BenchOptions {
-  std::string study, out = "out";
+  std::string study, out = "out", units;
   bool json = false, quick = false;
   int repeats = 3;
   std::uint64_t seed = 1;
@@ -47,10 +47,17 @@ int run(const BenchOptions& o) {
   for (const std::string& s : studies) {
     bool known = false;
     for (const auto& n : bench::study_names()) known = known || n == s;
-    if (!known) throw InputError("bench: unknown study '" + s + "' (allowed: selectors, theory, dsmc-error, methods, gaps)");
+    if (!known) throw InputError("bench: unknown study '" + s + "' (allowed: selectors, theory, dsmc-error, methods, gaps, schedule)");
   }
   bench::StudyOptions so;
   so.repeats = o.repeats, so.quick = o.quick, so.seed = o.seed;
+  so.units_file = o.units.empty() ? std::filesystem::path(o.out) / "units.tsv" : std::filesystem::path(o.units);
+  so.scenes_folder = default_scene_folder();
+  // All studies: schedule needs a validation's units.tsv; without one it is skipped, not an error.
+  if (o.study.empty() && !std::filesystem::exists(so.units_file)) {
+    studies.erase(std::remove(studies.begin(), studies.end(), "schedule"), studies.end());
+    if (!o.json) std::printf("bench schedule: skipped, no %s (make validate writes it)\n", so.units_file.c_str());
+  }
   if (!o.json) so.progress = [](const std::string& line) { std::printf("  %s\n", line.c_str()), std::fflush(stdout); };
   for (const std::string& name : studies) {
     if (!o.json) std::printf("bench %s%s:\n", name.c_str(), o.quick ? " (quick)" : ""), std::fflush(stdout);
@@ -86,9 +93,10 @@ int run(const BenchOptions& o) {
 }  // namespace
 
 std::function<int()> add_bench_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("bench", "speed-against-error studies: selectors, theory, dsmc-error, methods, gaps (all when omitted)");
+  CLI::App* cmd = app.add_subcommand("bench", "speed-against-error studies: selectors, theory, dsmc-error, methods, gaps, schedule (all when omitted)");
   auto o = std::make_shared<BenchOptions>();
-  cmd->add_option("study", o->study, "selectors | theory | dsmc-error | methods | gaps");
+  cmd->add_option("study", o->study, "selectors | theory | dsmc-error | methods | gaps | schedule");
+  cmd->add_option("--units", o->units, "schedule: units.tsv of a validate run (default DIR/units.tsv)");
   cmd->add_option("--out", o->out, "output folder (figures under DIR/bench/<study>/)");
   cmd->add_flag("--json", o->json, "one JSON object per measured case on stdout");
   cmd->add_option("--repeats", o->repeats, "runs per case; the median is reported")->check(CLI::Range(1, 100));

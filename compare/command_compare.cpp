@@ -36,12 +36,12 @@ dsmc::RunOptions run_options(const RunOptions& o) {
   return r;
 }
 
-std::filesystem::path default_scenes() {
+}  // namespace
+
+std::filesystem::path default_scene_folder() {
   if (std::filesystem::is_directory("compare/scenes")) return "compare/scenes";
   return std::filesystem::path(GRANMIX_SOURCE_DIR) / "compare" / "scenes";
 }
-
-}  // namespace
 
 std::function<int()> add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("compare", "theory and DSMC of a scene, deviations, report.json and the figure");
@@ -72,7 +72,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
   return [o]() {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
-    const std::filesystem::path dir = o->scenes.empty() ? default_scenes() : std::filesystem::path(o->scenes);
+    const std::filesystem::path dir = o->scenes.empty() ? default_scene_folder() : std::filesystem::path(o->scenes);
     if (!std::filesystem::is_directory(dir)) throw InputError("validate: no scene folder " + dir.string() + " (allowed: a folder of *.toml)");
     std::vector<std::filesystem::path> files;
     for (const auto& e : std::filesystem::directory_iterator(dir))

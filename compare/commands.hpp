@@ -3,6 +3,7 @@
 // returns the process exit code: 0 success, 1 comparison failed, 2 bad input, 3 numerical failure.
 #include <CLI/CLI.hpp>
 
+#include <filesystem>
 #include <functional>
 #include <string>
 
@@ -11,6 +12,9 @@ namespace granmix::compare {
 // The command line as typed, for provenance headers.
 const std::string& command_line();
 void set_command_line(int argc, char** argv);
+
+// compare/scenes of the working folder if there is one, else of the source tree.
+std::filesystem::path default_scene_folder();
 
 // Each returns the action to run once the command line has parsed.
 std::function<int()> add_theory_command(CLI::App& app);
