@@ -303,6 +303,7 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
     pool.emplace_back([&] {
       while (auto i = take()) store(run_unit(setups, units, *i), 0);
     });
+  std::fprintf(stderr, "DSMC: %zu units (replicas) of %zu ensembles on %d rank(s) x %d thread(s)\n", units.size(), setups.size(), w.size, T);
   Progress progress(total_cost, units.size());
   int byes = 0;
   for (;;) {

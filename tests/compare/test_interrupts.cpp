@@ -38,8 +38,8 @@ struct Interrupted {
   std::string stderr_text;
 };
 
-// Starts `granmix compare` on the long scene, waits until its staging folder exists (computing has
-// begun), sends `sig` and waits for the exit.
+// Starts `granmix compare` on the long scene, waits until its DSMC has begun (the scheduler's first
+// line on stderr), sends `sig` and waits for the exit.
 Interrupted interrupt_compare(const std::filesystem::path& out, int sig) {
   const std::filesystem::path err = test::fresh_dir("interrupt-stderr-" + std::to_string(getpid())) / "stderr.txt";
   posix_spawn_file_actions_t fa;
@@ -54,8 +54,13 @@ Interrupted interrupt_compare(const std::filesystem::path& out, int sig) {
   posix_spawn_file_actions_destroy(&fa);
   REQUIRE(spawned == 0);
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!has_entry_starting(out, ".interrupt-long-dsmc.tmp-") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  auto started = [&] {  // the scheduler's first line: the DSMC units are being computed
+    std::ifstream in(err);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str().find("DSMC: ") != std::string::npos;
+  };
+  while (!started() && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(std::chrono::milliseconds(20));
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // into the DSMC
   REQUIRE(kill(pid, sig) == 0);
   int status = 0;
@@ -79,7 +84,10 @@ TEST_CASE("SIGINT and SIGTERM during granmix compare: exit 130/143, one line, no
     INFO(r.stderr_text);
     CHECK(r.code == code);
     CHECK(r.stderr_text.find(std::string("granmix: interrupted by ") + name + "; finished: nothing") != std::string::npos);
-    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 1);
+    // One line about the interrupt, after the scheduler's start line.
+    CHECK(std::count(r.stderr_text.begin(), r.stderr_text.end(), '\n') == 2);
+    CHECK(r.stderr_text.rfind("granmix: interrupted", 0) == std::string::npos);
+    CHECK(r.stderr_text.find("\ngranmix: interrupted") != std::string::npos);
     CHECK_FALSE(std::filesystem::exists(base / "out"));  // no staging folder, no empty output folders
   }
 }
