@@ -14,7 +14,6 @@ SonineCooling::SonineCooling(const CollisionRates& rates, CumulantMode mode, std
       lambda_(N_),
       c_(N_),
       r_(N_) {
-  if (rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine cooling rates: need constant restitution coefficients");
   if (c0_.empty()) c0_.assign(N_, 0.0);
   if (c0_.size() != N_) throw std::invalid_argument("Sonine cooling rates: one initial cumulant per species needed");
 }

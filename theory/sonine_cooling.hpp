@@ -10,7 +10,9 @@
 // Both have the HCS of sonine_hcs as their fixed point. Relaxing is the kinetic level's default:
 // DSMC starts from Maxwellians and its cumulants build up over a few collisions (README, "Sonine
 // temperatures"); quasi-static jumps to them at t = 0 and costs an N×N LU per evaluation.
-// Constant restitution only (MG's pair terms). One object serves one integration at a time.
+// Any restitution law: the pair terms follow it (sonine_pair_terms.hpp; a viscoelastic ε(u) by quadrature over
+// the impact speed, whose cumulants then follow a time-dependent quasi-state as ε → 1). One object serves one
+// integration at a time.
 #include <vector>
 
 #include "collision_rates.hpp"

@@ -12,17 +12,21 @@
 // sonine_cooling.hpp, whose fixed point is therefore the same.
 #include <Eigen/Dense>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "model/mixture.hpp"
 #include "model/restitution.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
 class SonineSystem {
  public:
-  // α = restitution matrix (constant law only); χ = contact values; σ_ref² in the units of the
-  // diameters. The arguments are referenced, not copied: they must outlive the system.
+  // α = restitution law; χ = contact values; σ_ref² in the units of the diameters. The arguments are
+  // referenced, not copied: they must outlive the system. The pair terms follow the law
+  // (sonine_pair_terms.hpp): MG's closed forms at constant ε; for a viscoelastic law the quadrature over
+  // the impact speed, which needs λ_k in units with v0 = 1 (λ_k = m_k/(2T_k), as sonine_cooling.hpp).
   SonineSystem(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
                double sref2);
 
@@ -38,10 +42,10 @@ class SonineSystem {
 
  private:
   const model::Mixture& mix_;
-  const model::Restitution& alpha_;
   const std::vector<std::vector<double>>& chi_;
   double sref2_;
   std::size_t N_;
+  std::unique_ptr<const SoninePairTerms> terms_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
   Eigen::VectorXd A_, z0_, c_;
   Eigen::FullPivLU<Eigen::MatrixXd> lu_;
