@@ -75,7 +75,8 @@ double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, c
   return kinetic_velocity_decay_rate(rates, *make_sonine_pair_terms(rates.law()), k, T);
 }
 
-SecondSonineDecay::SecondSonineDecay(const CollisionRates& rates) : rates_(rates), terms_(make_sonine_pair_terms(rates.law())) {}
+SecondSonineDecay::SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms)
+    : rates_(rates), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {}
 
 void SecondSonineDecay::rates(const double* T, const double*, double* nu) const {
   for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T);

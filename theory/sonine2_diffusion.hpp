@@ -62,7 +62,8 @@ double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePair
 // The same as the VACF ODE's decay closure (the kinetic level's, theory_level.cpp).
 class SecondSonineDecay final : public VelocityDecay {
  public:
-  explicit SecondSonineDecay(const CollisionRates& rates);
+  // terms: pair terms shared with the cooling closure (null: the law's own).
+  explicit SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms = nullptr);
   void rates(const double* T, const double*, double* nu) const override;
 
  private:

@@ -1,5 +1,9 @@
 #include "sonine_pair_terms.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
 #include "sonine_quadrature.hpp"
 
 namespace granmix::theory {
@@ -29,34 +33,50 @@ class ClosedFormTerms final : public SoninePairTerms {
 
 class ImpactSpeedTerms final : public SoninePairTerms {
  public:
-  explicit ImpactSpeedTerms(const model::Restitution& law) : law_(law) {}
+  explicit ImpactSpeedTerms(const model::Restitution& law) : law_(law), cache_(law.size() * (law.size() + 1) / 2) {}
   SonineMoments self(std::size_t i, double w, double lambda_i) const override {
     const double th = 0.5 / lambda_i;
-    return sonine_moments(sonine_pair_quadrature(th, th, 0.5, eps(i, i)), w, th, true);
+    return sonine_moments(sonine_pair_quadrature(th, th, 0.5, eps_nodes(i, i, th + th)), w, th, true);
   }
   SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
-    const double th_i = 0.5 / lambda_i;
-    return sonine_moments(sonine_pair_quadrature(th_i, 0.5 / lambda_j, mu_ji, eps(i, j)), w, th_i, false);
+    const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
+    return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
   }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
-    const double Ak = Tk / mk;
-    const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ti / mi, mi / (mi + mk), eps(k, i));
+    const double Ak = Tk / mk, Ai = Ti / mi;
+    const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai));
     const SonineCollisionIntegrals& c = q.C;
     return {{weight * c.C00, weight * c.C01, weight * c.C10, weight * c.C11}, -weight * q.energy[0] / (3.0 * Ak)};
   }
 
  private:
-  std::function<double(double)> eps(std::size_t k, std::size_t i) const {
-    return [this, k, i](double u) { return law_.eps_at(k, i, u); };
+  // ε at the quadrature's impact speeds for the unordered pair {k, i} (ε_ki = ε_ik) at V = θ_k + θ_i, kept
+  // for the next call at the same V to rounding (1e-14 relative: the two closures compute V as T/m and as
+  // 1/(2λ)); evaluating the exact contact table is most of the cost of a pair.
+  const double* eps_nodes(std::size_t k, std::size_t i, double V) const {
+    const std::size_t a = std::min(k, i), b = std::max(k, i), N = law_.size();
+    Nodes& c = cache_[a * (2 * N - a + 1) / 2 + (b - a)];
+    if (c.eps.empty() || std::abs(V - c.V) > 1e-14 * V) {
+      c.eps.resize(sonine_quadrature_nodes());
+      sonine_quadrature_speeds(V, c.eps.data());
+      for (double& u : c.eps) u = law_.eps_at(k, i, u);
+      c.V = V;
+    }
+    return c.eps.data();
   }
+  struct Nodes {
+    double V = 0.0;
+    std::vector<double> eps;
+  };
   const model::Restitution& law_;
+  mutable std::vector<Nodes> cache_;
 };
 
 }  // namespace
 
-std::unique_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law) {
-  if (law.is_viscoelastic()) return std::make_unique<ImpactSpeedTerms>(law);
-  return std::make_unique<ClosedFormTerms>(law);
+std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law) {
+  if (law.is_viscoelastic()) return std::make_shared<ImpactSpeedTerms>(law);
+  return std::make_shared<ClosedFormTerms>(law);
 }
 
 }  // namespace granmix::theory

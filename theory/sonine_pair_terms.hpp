@@ -4,7 +4,9 @@
 //   ε(u)          the quadrature over the normal impact speed (sonine_quadrature.hpp). ε depends on the
 //                 physical impact speed, so the λ's must be in units with v0 = 1: λ_k = m_k/(2T_k).
 // SonineSystem (cooling rates and cumulant equations) and the second-Sonine tracer sums ask this object,
-// never the law, so a viscoelastic gas gets the same kinetic level as a constant-ε one.
+// never the law, so a viscoelastic gas gets the same kinetic level as a constant-ε one. The quadrature keeps
+// the ε of its last evaluation per pair (no allocation, the same ε for the cooling and the decay closures
+// when they share the object): like the closures, one object serves one integration at a time.
 #include <cstddef>
 #include <memory>
 
@@ -25,6 +27,6 @@ class SoninePairTerms {
   virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
 };
 
-std::unique_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);
+std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);
 
 }  // namespace granmix::theory

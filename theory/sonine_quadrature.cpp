@@ -17,7 +17,7 @@ namespace {
 // beyond 1.3 even with the u⁸ of the fourth moment); the panels split the steep fall of e^(−w²⁰) from the
 // w¹⁹ rise. 32 + 48 nodes reproduce the closed forms to ~1e-14 (tests/theory/test_sonine_quadrature.cpp).
 struct WRule {
-  std::vector<double> w, weight;  // weight includes 10 w¹⁹ e^(−w²⁰)
+  std::vector<double> w10, weight;  // w¹⁰ = u/√(2V) at the nodes; weight includes 10 w¹⁹ e^(−w²⁰)
   WRule() {
     const double edges[] = {0.0, 0.9, 1.3};
     const std::size_t nodes[] = {32, 48};
@@ -30,7 +30,7 @@ struct WRule {
           gsl_integration_glfixed_table_free(t);
           throw NumericalError("gsl_integration_glfixed_point failed");
         }
-        w.push_back(x);
+        w10.push_back(std::pow(x, 10));
         weight.push_back(h * 10.0 * std::pow(x, 19) * std::exp(-std::pow(x, 20)));
       }
       gsl_integration_glfixed_table_free(t);
@@ -60,18 +60,37 @@ const std::array<double, 2> laguerre_w = {(2.0 + sqrt2) / 4.0, (2.0 - sqrt2) / 4
 double S1(double x) { return 2.5 - x; }
 double S2(double x) { return 0.5 * x * x - 2.5 * x + 15.0 / 8.0; }
 
+const WRule& w_rule() {
+  static const WRule rule;
+  return rule;
+}
+
 }  // namespace
 
+std::size_t sonine_quadrature_nodes() { return w_rule().w10.size(); }
+
+void sonine_quadrature_speeds(double V, double* u) {
+  const WRule& rule = w_rule();
+  const double u_scale = std::sqrt(2.0 * V);
+  for (std::size_t n = 0; n < rule.w10.size(); ++n) u[n] = u_scale * rule.w10[n];
+}
+
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps) {
-  static const WRule rule;
+  std::vector<double> e(sonine_quadrature_nodes());
+  sonine_quadrature_speeds(theta_k + theta_i, e.data());
+  for (double& x : e) x = eps(x);
+  return sonine_pair_quadrature(theta_k, theta_i, mu, e.data());
+}
+
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
+  const WRule& rule = w_rule();
   static const Hermite5 hermite;
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   PairSonineIntegrals out;
-  for (std::size_t n = 0; n < rule.w.size(); ++n) {
-    const double w2 = rule.w[n] * rule.w[n], w10 = std::pow(w2 * w2 * rule.w[n], 2.0);
-    const double u = u_scale * w10, beta = mu * (1.0 + eps(u)), bu = beta * u;
+  for (std::size_t n = 0; n < rule.w10.size(); ++n) {
+    const double u = u_scale * rule.w10[n], beta = mu * (1.0 + eps_nodes[n]), bu = beta * u;
     std::array<double, 3> e2{}, e4{};
     double c00 = 0.0, c01 = 0.0, c10 = 0.0, c11 = 0.0;
     for (std::size_t h = 0; h < 5; ++h) {

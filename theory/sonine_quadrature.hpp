@@ -14,6 +14,7 @@
 // The u integral is a fixed Gauss–Legendre rule in w, u = √(2V) w¹⁰ (as collision_moments.cpp): the
 // integrand is smooth in w although ε depends on u^(1/10), and fixed nodes keep ODE right-hand sides smooth.
 #include <array>
+#include <cstddef>
 #include <functional>
 
 #include "sonine2_diffusion.hpp"
@@ -31,6 +32,13 @@ struct PairSonineIntegrals {
 // eps(u): the pair's restitution at normal impact speed u >= 0 (in the units of √θ).
 // mu = μ_ik = m_i/(m_i + m_k); theta_k = T_k/m_k, theta_i = T_i/m_i.
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps);
+
+// The normal impact speeds u_n at which the quadrature needs ε for a pair with V = θ_k + θ_i, and the same
+// integrals with ε given there (eps_nodes[n] = ε(u_n)): callers that reuse ε between calls of equal V
+// (pairs k–i and i–k, the cooling and the velocity-decay closures) evaluate the law once.
+std::size_t sonine_quadrature_nodes();
+void sonine_quadrature_speeds(double V, double* u);
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
 
 // The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
 // (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the

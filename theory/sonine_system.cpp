@@ -8,8 +8,8 @@
 namespace granmix::theory {
 
 SonineSystem::SonineSystem(const model::Mixture& mix, const model::Restitution& alpha,
-                           const std::vector<std::vector<double>>& chi, double sref2)
-    : mix_(mix), chi_(chi), sref2_(sref2), N_(mix.size()), terms_(make_sonine_pair_terms(alpha)), K_(N_, N_), Z_(N_, N_), A_(N_),
+                           const std::vector<std::vector<double>>& chi, double sref2, std::shared_ptr<const SoninePairTerms> terms)
+    : mix_(mix), chi_(chi), sref2_(sref2), N_(mix.size()), terms_(terms ? std::move(terms) : make_sonine_pair_terms(alpha)), K_(N_, N_), Z_(N_, N_), A_(N_),
       z0_(N_), c_(N_), lu_(N_, N_) {}
 
 void SonineSystem::assemble(const double* lambda) {

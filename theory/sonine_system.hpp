@@ -27,8 +27,9 @@ class SonineSystem {
   // referenced, not copied: they must outlive the system. The pair terms follow the law
   // (sonine_pair_terms.hpp): MG's closed forms at constant ε; for a viscoelastic law the quadrature over
   // the impact speed, which needs λ_k in units with v0 = 1 (λ_k = m_k/(2T_k), as sonine_cooling.hpp).
+  // terms: the pair terms to use (null: made from alpha; pass one to share it with other closures).
   SonineSystem(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-               double sref2);
+               double sref2, std::shared_ptr<const SoninePairTerms> terms = nullptr);
 
   std::size_t size() const { return N_; }
   // Fill K, A, z0, Z at the given λ_k (no allocation).
@@ -45,7 +46,7 @@ class SonineSystem {
   const std::vector<std::vector<double>>& chi_;
   double sref2_;
   std::size_t N_;
-  std::unique_ptr<const SoninePairTerms> terms_;
+  std::shared_ptr<const SoninePairTerms> terms_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
   Eigen::VectorXd A_, z0_, c_;
   Eigen::FullPivLU<Eigen::MatrixXd> lu_;

@@ -9,6 +9,7 @@
 #include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
@@ -63,8 +64,11 @@ class KineticLevel final : public TheoryLevel {
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return;
-    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
-    opt.decay = std::make_shared<SecondSonineDecay>(rates);
+    // One set of pair terms for both closures: a viscoelastic law's ε at the impact speeds is evaluated once
+    // per pair and right-hand side.
+    const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(rates.law());
+    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::vector<double>{}, terms);
+    opt.decay = std::make_shared<SecondSonineDecay>(rates, terms);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
