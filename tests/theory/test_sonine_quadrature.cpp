@@ -15,6 +15,7 @@
 #include "theory/sonine_quadrature.hpp"
 #include "theory/sonine_system.hpp"
 #include "theory/temperature_history.hpp"
+#include "theory/theory_level.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -169,4 +170,24 @@ TEST_CASE("Sonine quadrature: against a Monte Carlo of the collision integrals o
     CHECK(std::abs(z) < 4.0);
     CHECK(std::abs(expected[j]) > 5.0 * se);  // the test resolves every integral, the a-terms included
   }
+}
+
+TEST_CASE("Sonine quadrature: the kinetic level gives a viscoelastic scene the Sonine closures, the paper level does not", "[theory]") {
+  const CollisionRates r = test::viscoelastic_rates(test::bo_binary(), 0.09);
+  TemperatureOptions kinetic, paper;
+  make_theory_level("kinetic")->configure(kinetic, r);
+  make_theory_level("paper")->configure(paper, r);
+  REQUIRE(kinetic.cooling);
+  REQUIRE(kinetic.decay);
+  CHECK(kinetic.cooling->state_size() == 2);  // the relaxing cumulants c_1, c_2
+  CHECK_FALSE(paper.cooling);
+  // The decay closure is the second-Sonine rate of the quadrature: at T = 1, 1 it differs from the Maxwellian
+  // ν = τ_v⁻¹ + ξ/2 by the factor D[1]/D[2] on τ_v⁻¹ (1/1.031 for the light species here, sonine2_factor).
+  const std::vector<double> T = {1.0, 1.0};
+  std::vector<double> xi(2), nu(2);
+  r.xi_all(T.data(), xi.data());
+  kinetic.decay->rates(T.data(), xi.data(), nu.data());
+  const double inv_tau = r.inv_tau_v_species(0, T.data()), factor = sonine2_factor(r, 0, T.data());
+  CHECK(factor > 1.01);
+  CHECK(nu[0] == Approx(0.5 * xi[0] + inv_tau / factor).epsilon(1e-9));
 }
