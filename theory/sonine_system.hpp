@@ -1,6 +1,7 @@
 #pragma once
 // The Garzó–Dufty first-Sonine equations of an N-species mixture at given temperatures (MG Sec. 2,
-// Eqs. 31–45, Appendix A: the pair terms of sonine_terms.hpp summed over partners), in MG's reduced
+// Eqs. 31–45, Appendix A: the pair terms of sonine_pair_terms.hpp — MG's closed forms, or their quadrature over
+// the impact speed for a viscoelastic law — summed over partners), in MG's reduced
 // units with the reference scales left to the caller: λ_k = m_k v0²/(2T_k), s_ij = (σ_ij/σ_ref)²,
 // rates in units of ν_ref = n σ_ref² v0 (n the total density). With c_k = 2a₂,k (physics.md §6):
 //   cooling rates   ζ_i/ν_ref = z0_i + Σ_j Z_ij c_j                               (MG Eqs. 39–41)
