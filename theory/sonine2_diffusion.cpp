@@ -65,9 +65,10 @@ double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* 
 double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T) {
   const SonineTracerSums s = sonine2_tracer_sums(rates, terms, k, T);
   const double factor = sonine2_factor(s.C, s.xi);
-  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1) with ν_k = (2/3)C₀₀: one pass over the partners.
-  // No second-Sonine solution: the first-Sonine ν_k.
-  const double inv_tau = (2.0 / 3.0) * s.C.C00 - 0.5 * s.xi;
+  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1; (2/3)C₀₀ − ξ_k/2 of these sums to 1e-12, tested) taken from the
+  // rates' own v1 (A1)/(A3), the paper level's: one implementation of τ_v for both levels, so that an error
+  // in it moves the judged curves too. No second-Sonine solution: the first-Sonine ν_k.
+  const double inv_tau = rates.inv_tau_v_species(k, T);
   return 0.5 * s.xi + inv_tau / (std::isfinite(factor) ? factor : 1.0);
 }
 
