@@ -3,7 +3,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <stdexcept>
+
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
@@ -26,19 +27,20 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
           0.5 * bP * (30.0 - 33.0 * b + 12.0 * b * b + 22.0 * a - 9.0 * a * b - 3.0 * a * a)};
 }
 
-SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T) {
-  if (rates.law().is_viscoelastic())
-    throw std::invalid_argument("second-Sonine diffusion: closed forms need a constant restitution per pair, not a viscoelastic law");
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T) {
   const model::Mixture& mix = rates.mixture();
-  const double mk = mix[k].mass, Tk = T[k], Ak = Tk / mk;
   SonineTracerSums sum;
   for (std::size_t i = 0; i < mix.size(); ++i) {
-    const double mi = mix[i].mass, s = mix.sigma(k, i), eps = rates.law().eps(k, i);
-    const SonineCollisionIntegrals c = sonine2_pair_integrals(mix[i].density * s * s * rates.chi(k, i), mi / (mi + mk), eps, Ak, T[i] / mi);
-    sum.C.C00 += c.C00, sum.C.C01 += c.C01, sum.C.C10 += c.C10, sum.C.C11 += c.C11;
-    sum.xi += (2.0 / 3.0) * c.C00 * ((1.0 - eps) - (1.0 + eps) * mk * (T[i] - Tk) / ((mi + mk) * Tk));  // ν_ki = (2/3)C₀₀,ki
+    const double s = mix.sigma(k, i);
+    const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i]);
+    sum.C.C00 += p.C.C00, sum.C.C01 += p.C.C01, sum.C.C10 += p.C.C10, sum.C.C11 += p.C.C11;
+    sum.xi += p.xi;
   }
   return sum;
+}
+
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T) {
+  return sonine2_tracer_sums(rates, *make_sonine_pair_terms(rates.law()), k, T);
 }
 
 SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T) {
@@ -60,13 +62,25 @@ double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* 
   return sonine2_factor(s.C, s.xi);
 }
 
-double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T) {
-  const SonineTracerSums s = sonine2_tracer_sums(rates, k, T);
+double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T) {
+  const SonineTracerSums s = sonine2_tracer_sums(rates, terms, k, T);
   const double factor = sonine2_factor(s.C, s.xi);
-  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1) with ν_k = (2/3)C₀₀: one pass over the partners.
-  // No second-Sonine solution: the first-Sonine ν_k.
-  const double inv_tau = (2.0 / 3.0) * s.C.C00 - 0.5 * s.xi;
+  // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1; (2/3)C₀₀ − ξ_k/2 of these sums to 1e-12, tested) taken from the
+  // rates' own v1 (A1)/(A3), the paper level's: one implementation of τ_v for both levels, so that an error
+  // in it moves the judged curves too. No second-Sonine solution: the first-Sonine ν_k.
+  const double inv_tau = rates.inv_tau_v_species(k, T);
   return 0.5 * s.xi + inv_tau / (std::isfinite(factor) ? factor : 1.0);
+}
+
+double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T) {
+  return kinetic_velocity_decay_rate(rates, *make_sonine_pair_terms(rates.law()), k, T);
+}
+
+SecondSonineDecay::SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms)
+    : rates_(rates), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {}
+
+void SecondSonineDecay::rates(const double* T, const double*, double* nu) const {
+  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T);
 }
 
 }  // namespace granmix::theory

@@ -9,6 +9,7 @@
 //   D_k[2] = (3T_k/2m_k) / [C₀₀ − ¾ζ − C₀₁(C₁₀ + 15ζ/4)/(C₁₁ − 45ζ/8)]
 // Cost O(N) per species, no quadrature: meant for ODE right-hand sides.
 #include <cstddef>
+#include <memory>
 
 #include "collision_rates.hpp"
 #include "cooling_model.hpp"
@@ -24,8 +25,8 @@ struct SonineCollisionIntegrals {
 // Ak = T_k/m_k, Ai = T_i/m_i.
 SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai);
 
-// Σ_i over all partners of k at the temperatures T (constant restitution only: the closed forms
-// need ε independent of the impact velocity; a viscoelastic law throws std::invalid_argument).
+// Σ_i over all partners of k at the temperatures T: closed forms at constant restitution, a quadrature over
+// the normal impact speed for a viscoelastic law (sonine_pair_terms.hpp, sonine_quadrature.hpp).
 SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T);
 
 // The same sums and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
@@ -35,6 +36,9 @@ struct SonineTracerSums {
   double xi = 0.0;
 };
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T);
+class SoninePairTerms;
+// The same with the pair terms made once by the caller (make_sonine_pair_terms; for ODE right-hand sides).
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T);
 
 // D_k[2]/D_k[1] with the cooling rate zeta that scales the problem (the common ζ of the HCS).
 // NaN where the truncated problem has no diffusive solution: C₀₀ − ¾ζ ≤ 0 (ν_k ≤ ζ/2, no first-Sonine
@@ -53,17 +57,18 @@ double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* 
 // so that the VACF form of the MSD (msd.hpp) gives D_k[2] in its diffusive regime. Where the factor
 // is NaN (see above) this is the first-Sonine ν_k, the rate the MSD needs without a diffusive regime.
 double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T);
+double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T);
 
 // The same as the VACF ODE's decay closure (the kinetic level's, theory_level.cpp).
 class SecondSonineDecay final : public VelocityDecay {
  public:
-  explicit SecondSonineDecay(const CollisionRates& rates) : rates_(rates) {}
-  void rates(const double* T, const double*, double* nu) const override {
-    for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, k, T);
-  }
+  // terms: pair terms shared with the cooling closure (null: the law's own).
+  explicit SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms = nullptr);
+  void rates(const double* T, const double*, double* nu) const override;
 
  private:
   const CollisionRates& rates_;
+  std::shared_ptr<const SoninePairTerms> terms_;
 };
 
 }  // namespace granmix::theory

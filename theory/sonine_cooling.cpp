@@ -4,17 +4,17 @@
 
 namespace granmix::theory {
 
-SonineCooling::SonineCooling(const CollisionRates& rates, CumulantMode mode, std::vector<double> c0)
+SonineCooling::SonineCooling(const CollisionRates& rates, CumulantMode mode, std::vector<double> c0,
+                             std::shared_ptr<const SoninePairTerms> terms)
     : rates_(rates),
       mode_(mode),
       c0_(std::move(c0)),
       N_(rates.size()),
       n_(rates.mixture().total_density()),
-      system_(rates.mixture(), rates.law(), rates.contact_values(), 1.0),
+      system_(rates.mixture(), rates.law(), rates.contact_values(), 1.0, std::move(terms)),
       lambda_(N_),
       c_(N_),
       r_(N_) {
-  if (rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine cooling rates: need constant restitution coefficients");
   if (c0_.empty()) c0_.assign(N_, 0.0);
   if (c0_.size() != N_) throw std::invalid_argument("Sonine cooling rates: one initial cumulant per species needed");
 }

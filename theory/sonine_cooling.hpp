@@ -10,7 +10,10 @@
 // Both have the HCS of sonine_hcs as their fixed point. Relaxing is the kinetic level's default:
 // DSMC starts from Maxwellians and its cumulants build up over a few collisions (README, "Sonine
 // temperatures"); quasi-static jumps to them at t = 0 and costs an N×N LU per evaluation.
-// Constant restitution only (MG's pair terms). One object serves one integration at a time.
+// Any restitution law: the pair terms follow it (sonine_pair_terms.hpp; a viscoelastic ε(u) by quadrature over
+// the impact speed, whose cumulants then follow a time-dependent quasi-state as ε → 1). One object serves one
+// integration at a time.
+#include <memory>
 #include <vector>
 
 #include "collision_rates.hpp"
@@ -24,7 +27,9 @@ enum class CumulantMode { relaxing, quasi_static };
 class SonineCooling final : public CoolingModel {
  public:
   // c0: initial cumulants of the relaxing mode (empty: 0, the Maxwellian start); ignored by quasi_static.
-  explicit SonineCooling(const CollisionRates& rates, CumulantMode mode = CumulantMode::relaxing, std::vector<double> c0 = {});
+  // terms: pair terms shared with another closure (null: the law's own, sonine_pair_terms.hpp).
+  explicit SonineCooling(const CollisionRates& rates, CumulantMode mode = CumulantMode::relaxing, std::vector<double> c0 = {},
+                         std::shared_ptr<const SoninePairTerms> terms = nullptr);
 
   CumulantMode mode() const { return mode_; }
   std::size_t state_size() const override { return mode_ == CumulantMode::relaxing ? N_ : 0; }

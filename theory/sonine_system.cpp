@@ -3,25 +3,25 @@
 #include <cmath>
 
 #include "model/errors.hpp"
-#include "sonine_terms.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
 SonineSystem::SonineSystem(const model::Mixture& mix, const model::Restitution& alpha,
-                           const std::vector<std::vector<double>>& chi, double sref2)
-    : mix_(mix), alpha_(alpha), chi_(chi), sref2_(sref2), N_(mix.size()), K_(N_, N_), Z_(N_, N_), A_(N_), z0_(N_), c_(N_),
-      lu_(N_, N_) {}
+                           const std::vector<std::vector<double>>& chi, double sref2, std::shared_ptr<const SoninePairTerms> terms)
+    : mix_(mix), chi_(chi), sref2_(sref2), N_(mix.size()), terms_(terms ? std::move(terms) : make_sonine_pair_terms(alpha)), K_(N_, N_), Z_(N_, N_), A_(N_),
+      z0_(N_), c_(N_), lu_(N_, N_) {}
 
 void SonineSystem::assemble(const double* lambda) {
   for (std::size_t i = 0; i < N_; ++i) {
     const double s_ii = std::pow(mix_[i].diameter, 2) / sref2_;
-    SonineMoments own = sonine_self(mix_.fraction(i), chi_[i][i], s_ii, alpha_.eps(i, i), lambda[i]);
+    SonineMoments own = terms_->self(i, mix_.fraction(i) * chi_[i][i] * s_ii, lambda[i]);
     const double f = 15.0 / (2.0 * lambda[i] * lambda[i]);
     for (std::size_t j = 0; j < N_; ++j) {
       if (j == i) continue;
       const double s_ij = std::pow(mix_.sigma(i, j), 2) / sref2_;
       const double mu_ji = mix_[j].mass / (mix_[i].mass + mix_[j].mass);
-      const SonineMoments p = sonine_cross(mix_.fraction(j), chi_[i][j], s_ij, alpha_.eps(i, j), mu_ji, lambda[i], lambda[j]);
+      const SonineMoments p = terms_->cross(i, j, mix_.fraction(j) * chi_[i][j] * s_ij, mu_ji, lambda[i], lambda[j]);
       own.zeta0 += p.zeta0, own.zeta_self += p.zeta_self;
       own.Lambda0 += p.Lambda0, own.Lambda_self += p.Lambda_self;
       K_(i, j) = f * p.zeta_cross + p.Lambda_cross, Z_(i, j) = p.zeta_cross;  // MG (35), (37), (41)

@@ -1,6 +1,7 @@
 #pragma once
 // The Garzó–Dufty first-Sonine equations of an N-species mixture at given temperatures (MG Sec. 2,
-// Eqs. 31–45, Appendix A: the pair terms of sonine_terms.hpp summed over partners), in MG's reduced
+// Eqs. 31–45, Appendix A: the pair terms of sonine_pair_terms.hpp — MG's closed forms, or their quadrature over
+// the impact speed for a viscoelastic law — summed over partners), in MG's reduced
 // units with the reference scales left to the caller: λ_k = m_k v0²/(2T_k), s_ij = (σ_ij/σ_ref)²,
 // rates in units of ν_ref = n σ_ref² v0 (n the total density). With c_k = 2a₂,k (physics.md §6):
 //   cooling rates   ζ_i/ν_ref = z0_i + Σ_j Z_ij c_j                               (MG Eqs. 39–41)
@@ -12,19 +13,24 @@
 // sonine_cooling.hpp, whose fixed point is therefore the same.
 #include <Eigen/Dense>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 #include "model/mixture.hpp"
 #include "model/restitution.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
 class SonineSystem {
  public:
-  // α = restitution matrix (constant law only); χ = contact values; σ_ref² in the units of the
-  // diameters. The arguments are referenced, not copied: they must outlive the system.
+  // α = restitution law; χ = contact values; σ_ref² in the units of the diameters. The arguments are
+  // referenced, not copied: they must outlive the system. The pair terms follow the law
+  // (sonine_pair_terms.hpp): MG's closed forms at constant ε; for a viscoelastic law the quadrature over
+  // the impact speed, which needs λ_k in units with v0 = 1 (λ_k = m_k/(2T_k), as sonine_cooling.hpp).
+  // terms: the pair terms to use (null: made from alpha; pass one to share it with other closures).
   SonineSystem(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-               double sref2);
+               double sref2, std::shared_ptr<const SoninePairTerms> terms = nullptr);
 
   std::size_t size() const { return N_; }
   // Fill K, A, z0, Z at the given λ_k (no allocation).
@@ -38,10 +44,10 @@ class SonineSystem {
 
  private:
   const model::Mixture& mix_;
-  const model::Restitution& alpha_;
   const std::vector<std::vector<double>>& chi_;
   double sref2_;
   std::size_t N_;
+  std::shared_ptr<const SoninePairTerms> terms_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
   Eigen::VectorXd A_, z0_, c_;
   Eigen::FullPivLU<Eigen::MatrixXd> lu_;

@@ -9,6 +9,7 @@
 #include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
@@ -33,20 +34,27 @@ class PaperLevel final : public TheoryLevel {
 // The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
 // ODE (transients included) with the tagged velocity decaying at the rate that gives the second-Sonine
-// D_k in the diffusive regime (ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], physics-beyond §3); settled states from the first-Sonine HCS. Viscoelastic laws keep the
-// Maxwellian cooling (MG's Sonine terms are for constant restitution), and so does an elastic gas,
-// whose settled state is the Maxwellian equilibrium (the cumulant equations are singular there), and
-// a mixture of more than 64 species (below).
+// D_k in the diffusive regime (ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], physics-beyond §3); settled states from
+// the first-Sonine HCS. The pair integrals follow the restitution law (sonine_pair_terms.hpp): closed forms
+// at constant ε, a quadrature over the normal impact speed for a viscoelastic law, whose cumulants then
+// follow a drifting quasi-state (ε → 1 as the gas cools) and which has no HCS: its settled ratios stay the
+// momentary Maxwellian ones (settled_ratios.hpp). An elastic gas keeps the Maxwellian closures (its settled
+// state is the Maxwellian equilibrium, where the cumulant equations are singular), and so does a mixture
+// of more than 64 species (below).
 // Above this many species the Sonine closure is not used: its cumulant system is dense N×N at every
 // right-hand side (691 species took 114 s), while a many-species gas of this toolkit (v2 Fig. 6, ε = 0.99)
 // has Sonine corrections of order 3a₂/16 ~ 5e-4. A sparse or fused form would lift the limit.
 constexpr std::size_t max_sonine_species = 64;
 
+bool dissipative(const model::Restitution& law, std::size_t k, std::size_t i) {
+  return law.is_viscoelastic() ? law.akappa(k, i) > 0.0 : law.eps(k, i) < 1.0;
+}
+
 bool sonine_applies(const CollisionRates& rates) {
-  if (rates.law().is_viscoelastic() || rates.size() > max_sonine_species) return false;
+  if (rates.size() > max_sonine_species) return false;
   for (std::size_t k = 0; k < rates.size(); ++k)
     for (std::size_t i = k; i < rates.size(); ++i)
-      if (rates.law().eps(k, i) < 1.0) return true;
+      if (dissipative(rates.law(), k, i)) return true;
   return false;
 }
 
@@ -56,8 +64,11 @@ class KineticLevel final : public TheoryLevel {
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return;
-    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing);
-    opt.decay = std::make_shared<SecondSonineDecay>(rates);
+    // One set of pair terms for both closures: a viscoelastic law's ε at the impact speeds is evaluated once
+    // per pair and right-hand side.
+    const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(rates.law());
+    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::vector<double>{}, terms);
+    opt.decay = std::make_shared<SecondSonineDecay>(rates, terms);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
@@ -85,7 +96,7 @@ class KineticLevel final : public TheoryLevel {
     return a.T;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
-    if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;
+    if (!sonine_applies(rates) || rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
   }
 };

@@ -5,7 +5,8 @@
 //            default), D_k = T_k τ_v,k/m_k (v1 Eq. 19 = the first-Sonine D, physics-beyond §1).
 //   kinetic  first-Sonine (Garzó–Dufty) cooling rates with relaxing cumulants (physics-beyond §4), the MSD
 //            by the velocity-autocorrelation ODE (§2) decaying at ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], i.e. the
-//            second-Sonine D at long times (§3), settled states of the first-Sonine HCS (MG App. A).
+//            second-Sonine D at long times (§3), settled states of the first-Sonine HCS (MG App. A); for a
+//            viscoelastic law the same integrals by quadrature over the impact speed (sonine_quadrature.hpp).
 // A level is a type, chosen once per scene: the code that computes curves never asks which it is.
 #include <memory>
 #include <string>

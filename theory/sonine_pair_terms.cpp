@@ -1,0 +1,82 @@
+#include "sonine_pair_terms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "sonine_quadrature.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+class ClosedFormTerms final : public SoninePairTerms {
+ public:
+  explicit ClosedFormTerms(const model::Restitution& law) : law_(law) {}
+  SonineMoments self(std::size_t i, double w, double lambda_i) const override {
+    return sonine_self(w, 1.0, 1.0, law_.eps(i, i), lambda_i);
+  }
+  SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
+    return sonine_cross(w, 1.0, 1.0, law_.eps(i, j), mu_ji, lambda_i, lambda_j);
+  }
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+    const double eps = law_.eps(k, i);
+    SonineTracerSums s{sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi), 0.0};
+    // v1 (A2) as ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], ν_ki = (2/3)C₀₀: exactly 0 for ε = 1, T_i = T_k.
+    s.xi = (2.0 / 3.0) * s.C.C00 * ((1.0 - eps) - (1.0 + eps) * mk * (Ti - Tk) / ((mi + mk) * Tk));
+    return s;
+  }
+
+ private:
+  const model::Restitution& law_;
+};
+
+class ImpactSpeedTerms final : public SoninePairTerms {
+ public:
+  explicit ImpactSpeedTerms(const model::Restitution& law) : law_(law), cache_(law.size() * (law.size() + 1) / 2) {}
+  SonineMoments self(std::size_t i, double w, double lambda_i) const override {
+    const double th = 0.5 / lambda_i;
+    return sonine_moments(sonine_pair_quadrature(th, th, 0.5, eps_nodes(i, i, th + th)), w, th, true);
+  }
+  SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
+    const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
+    return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
+  }
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+    const double Ak = Tk / mk, Ai = Ti / mi;
+    const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai));
+    const SonineCollisionIntegrals& c = q.C;
+    return {{weight * c.C00, weight * c.C01, weight * c.C10, weight * c.C11}, -weight * q.energy[0] / (3.0 * Ak)};
+  }
+
+ private:
+  // ε at the quadrature's impact speeds for the unordered pair {k, i} (ε_ki = ε_ik) at V = θ_k + θ_i, kept
+  // for the next call at the same V to rounding (1e-14 relative: the two closures compute V as T/m and as
+  // 1/(2λ)); evaluating the exact contact table is most of the cost of a pair.
+  const double* eps_nodes(std::size_t k, std::size_t i, double V) const {
+    const std::size_t a = std::min(k, i), b = std::max(k, i), N = law_.size();
+    Nodes& c = cache_[a * (2 * N - a + 1) / 2 + (b - a)];
+    if (c.eps.empty() || std::abs(V - c.V) > 1e-14 * V) {
+      c.eps.resize(sonine_quadrature_nodes());
+      sonine_quadrature_speeds(V, c.eps.data());
+      for (double& u : c.eps) u = law_.eps_at(k, i, u);
+      c.V = V;
+    }
+    return c.eps.data();
+  }
+  struct Nodes {
+    double V = 0.0;
+    std::vector<double> eps;
+  };
+  const model::Restitution& law_;
+  mutable std::vector<Nodes> cache_;
+};
+
+}  // namespace
+
+std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law) {
+  if (law.is_viscoelastic()) return std::make_shared<ImpactSpeedTerms>(law);
+  return std::make_shared<ClosedFormTerms>(law);
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,48 @@
+#pragma once
+// First-Sonine collision integrals of one pair (k, i) whose restitution coefficient depends on the
+// normal impact speed u = g·σ̂ (viscoelastic spheres, Brilliantov & Pöschel; v1 Eq. 5), by quadrature
+// over u (physics-beyond.md §4; issue 12). The distributions are f_k = f_M,k (1 + a_k S₂(c_k²)) and
+// f_i likewise, kept to first order in the a's as Garzó–Dufty/MG do (so at constant ε these integrals
+// are MG's Eqs. 39–44 and the C_pq of sonine2_diffusion.hpp). With θ = T/m and V = θ_k + θ_i,
+//   collisional rate of ⟨ψ(v_k)⟩ from partner i = n_i σ_ki² χ_ki · 4π ∫₀^∞ du u φ_V(u) E[w Δψ | g_z = u],
+// φ_V the Gaussian density of one component of g, w = 1 + a_k S₂(c_k²) + a_i S₂(c_i²), Δψ = ψ(v_k′) − ψ(v_k),
+// v_k′ = v_k − μ_ik (1 + ε(u)) u σ̂. Why it reduces to one integral: the σ̂ integral of a rotation-invariant
+// integrand is 4π times its value at σ̂ = ẑ, and given g_z = u the Maxwellian pair splits into independent parts
+//   v_kz = W + (θ_k/V) u,  v_iz = W − (θ_i/V) u,  W ~ N(0, θ_kθ_i/V);   |v_k⊥|² ~ Exp(mean 2θ_k), |v_i⊥|² ~ Exp(2θ_i).
+// E[· | u] of these polynomials is exact: Gauss–Hermite (5 points, degree 8 needed) in W, Gauss–Laguerre
+// (2 points, degree 3) in |v_k⊥|², and E[S₂(c_i²) | v_iz] = y²/2 − 3y/2 + 3/8, y = v_iz²/(2θ_i), in closed form.
+// The u integral is a fixed Gauss–Legendre rule in w, u = √(2V) w¹⁰ (as collision_moments.cpp): the
+// integrand is smooth in w although ε depends on u^(1/10), and fixed nodes keep ODE right-hand sides smooth.
+#include <array>
+#include <cstddef>
+#include <functional>
+
+#include "sonine2_diffusion.hpp"
+#include "sonine_terms.hpp"
+
+namespace granmix::theory {
+
+// All per unit n_i σ_ki² χ_ki (multiply by it for the pair's rates).
+struct PairSonineIntegrals {
+  // Collisional rates of ⟨v_k²⟩ and ⟨v_k⁴⟩: [0] at a = 0, [1] coefficient of a_k, [2] coefficient of a_i.
+  std::array<double, 3> energy{}, fourth{};
+  SonineCollisionIntegrals C;  // the Maxwellian C_pq of the tracer problem (sonine2_diffusion.hpp)
+};
+
+// eps(u): the pair's restitution at normal impact speed u >= 0 (in the units of √θ).
+// mu = μ_ik = m_i/(m_i + m_k); theta_k = T_k/m_k, theta_i = T_i/m_i.
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps);
+
+// The normal impact speeds u_n at which the quadrature needs ε for a pair with V = θ_k + θ_i, and the same
+// integrals with ε given there (eps_nodes[n] = ε(u_n)): callers that reuse ε between calls of equal V
+// (pairs k–i and i–k, the cooling and the velocity-decay closures) evaluate the law once.
+std::size_t sonine_quadrature_nodes();
+void sonine_quadrature_speeds(double V, double* u);
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
+
+// The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
+// (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the
+// coefficients of c = 2a halved; w = x_i χ_ki s_ki. self: the partner is species k itself (both a's are a_k).
+SonineMoments sonine_moments(const PairSonineIntegrals& q, double w, double theta_k, bool self);
+
+}  // namespace granmix::theory
