@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Strong scaling of the DSMC scheduler on this machine (issue 14): the same validation (default: the
 # quick scenes bo1-fig02, bo1-fig05, bo2-fig05, mg-fig01) as 1 process x 1 thread, 1 x 2 threads,
-# 2 MPI ranks x 1 thread, and 1 MPI rank x 2 threads; wall time of the DSMC phase (summary.json
+# 2 MPI ranks x 1 thread, and 1 MPI rank x 2 threads (bound and unbound); wall time of the DSMC phase (summary.json
 # dsmc_wall_seconds), speed-up against 1 x 1, and a check that the outputs are the same bytes.
 # Usage: bench/strong-scaling.sh [BUILD] [SCENE.toml ...]   (prints a TSV on stdout)
 set -euo pipefail
@@ -23,10 +23,16 @@ run() {  # name, launcher..., then granmix arguments after --
 echo "# granmix strong scaling, $(nproc) cores, load $(cut -d' ' -f1 /proc/loadavg) at start, $(date -u +%FT%TZ), git $(git rev-parse --short HEAD)"
 printf "layout\tranks\tthreads\tdsmc_wall_s\tcpu_s\tspeedup\tsame_bytes\n"
 base=""
-for layout in "serial 1 1" "serial 1 2" "mpi 2 1" "mpi 1 2"; do
+# mpi: Open MPI's default binding (each rank to one core when np <= 2: two threads of one rank then
+# share a core); mpi-unbound: --bind-to none, what hybrid ranks x threads runs need.
+for layout in "serial 1 1" "serial 1 2" "mpi 2 1" "mpi 1 2" "mpi-unbound 1 2"; do
   set -- $layout
   kind=$1 ranks=$2 threads=$3 name="$1-$2x$3"
-  if [ "$kind" = serial ]; then r=$(run "$name" env -- --threads "$threads"); else r=$(run "$name" mpirun --oversubscribe -n "$ranks" -- --threads "$threads"); fi
+  case $kind in
+    serial) r=$(run "$name" env -- --threads "$threads") ;;
+    mpi) r=$(run "$name" mpirun --oversubscribe -n "$ranks" -- --threads "$threads") ;;
+    *) r=$(run "$name" mpirun --oversubscribe --bind-to none -n "$ranks" -- --threads "$threads") ;;
+  esac
   wall=${r% *} cpu=${r#* }
   [ -n "$base" ] || base=$wall
   same=yes
