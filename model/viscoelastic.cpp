@@ -24,12 +24,18 @@ ViscoelasticForm parse_viscoelastic_form(const std::string& name) { return parse
 
 const char* to_string(ViscoelasticForm f) { return enum_name(form_names, f); }
 
-double restitution_series(double y) {
-  // v1 Eq. (5), Horner in y.
+namespace {
+
+// Σ h_j y^j of v1 Eq. (5), Horner in y.
+double series_sum(double y) {
   double s = 0.0;
   for (std::size_t j = viscoelastic_h.size(); j-- > 0;) s = (s + viscoelastic_h[j]) * y;
-  return 1.0 + s;
+  return s;
 }
+
+}  // namespace
+
+double restitution_series(double y) { return 1.0 + series_sum(y); }
 
 double restitution_pade(double y) {
   // physics.md §5, [3/6] Padé in y.
@@ -137,6 +143,22 @@ double restitution(ViscoelasticForm form, double y) {
     case ViscoelasticForm::exact: return restitution_exact(y);
     case ViscoelasticForm::series: return restitution_series(y);
     case ViscoelasticForm::pade: return restitution_pade(y);
+  }
+  throw std::logic_error("unknown viscoelastic form");
+}
+
+double restitution_deficit(ViscoelasticForm form, double y) {
+  switch (form) {
+    case ViscoelasticForm::exact: return 1.0 - restitution_exact(y);
+    case ViscoelasticForm::series: return -series_sum(y);
+    case ViscoelasticForm::pade: {
+      // den − num of restitution_pade: the constant and linear terms cancel exactly.
+      const double diff =
+          y * y * ((1.72765 - 0.574198) + y * ((1.37842 - 0.141552) + y * (1.19449 + y * (0.467273 + y * 0.235585))));
+      const double den =
+          1 + y * (1.07232 + y * (1.72765 + y * (1.37842 + y * (1.19449 + y * (0.467273 + y * 0.235585)))));
+      return diff / den;
+    }
   }
   throw std::logic_error("unknown viscoelastic form");
 }

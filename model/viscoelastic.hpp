@@ -26,5 +26,9 @@ double restitution_exact(double y);
 inline constexpr double viscoelastic_table_y_max = 16.0;
 
 double restitution(ViscoelasticForm form, double y);
+// 1 − ε(y) without the cancellation of 1 − restitution(): at late times y ~ 1e-3 and 1 − ε ~ 1e-6,
+// where the difference keeps only 10 digits (the collision-moment quadrature then gave up with GSL
+// "roundoff error"; property tests). Series and Padé from their coefficients; exact: 1 − table.
+double restitution_deficit(ViscoelasticForm form, double y);
 
 }  // namespace granmix::model

@@ -3,6 +3,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_roots.h>
 
+#include <limits>
+
 #include "model/errors.hpp"
 #include "model/gsl_setup.hpp"
 
@@ -20,22 +22,29 @@ Root bracketed_root(const std::function<double(double)>& f, const std::string& w
   }
   if (flo == 0.0) return {lo, 0};
   if (fhi == 0.0) return {hi, 0};
-  gsl_function F{[](double x, void* p) { return (*static_cast<const std::function<double(double)>*>(p))(x); },
-                 const_cast<std::function<double(double)>*>(&f)};
-  gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  struct Callback {
+    const std::function<double(double)>& f;
+    model::GslCallbackGuard guard;
+  } cb{f, {}};
+  gsl_function F{[](double x, void* p) {
+                   auto& c = *static_cast<Callback*>(p);
+                   return c.guard.run(std::numeric_limits<double>::quiet_NaN(), [&] { return c.f(x); });
+                 },
+                 &cb};
+  const model::GslPtr<gsl_root_fsolver, gsl_root_fsolver_free> s(gsl_root_fsolver_alloc(gsl_root_fsolver_brent));
   if (s == nullptr) throw NumericalError("gsl_root_fsolver_alloc failed");
   Root out;
-  int status = gsl_root_fsolver_set(s, &F, lo, hi);
+  int status = gsl_root_fsolver_set(s.get(), &F, lo, hi);
   while (status == GSL_SUCCESS && out.iterations < 500) {
     ++out.iterations;
-    status = gsl_root_fsolver_iterate(s);
+    status = gsl_root_fsolver_iterate(s.get());
     if (status != GSL_SUCCESS) break;
-    out.x = gsl_root_fsolver_root(s);
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 1e-300, 2e-16);
+    out.x = gsl_root_fsolver_root(s.get());
+    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s.get()), gsl_root_fsolver_x_upper(s.get()), 1e-300, 2e-16);
     if (status == GSL_SUCCESS) break;
     if (status == GSL_CONTINUE) status = GSL_SUCCESS;
   }
-  gsl_root_fsolver_free(s);
+  cb.guard.rethrow();
   if (status != GSL_SUCCESS) throw NumericalError(what + " (gsl brent): " + gsl_strerror(status));
   return out;
 }

@@ -84,15 +84,16 @@ namespace {
 // The loop of CollisionRates::symmetric_sums for the requested outputs (compile-time flags). Row k
 // starts with the contributions of the rows before it and adds its own terms i = k … N−1 in order,
 // so each sum runs over i = 0 … N−1 exactly as a per-species loop would (same numbers).
+// W2, D: the moments of every link (packed like Links).
 template <bool with_xi, bool with_tau, class Links, class XiF, class TauF>
 void pair_pass(std::size_t N, const double* __restrict T, const double* __restrict inv_m, const Links& L,
-               double* __restrict xi, double* __restrict inv_tau, XiF xi_f, TauF tau_f) {
+               const double* __restrict W2, const double* __restrict D, double* __restrict xi,
+               double* __restrict inv_tau, XiF xi_f, TauF tau_f) {
   for (std::size_t k = 0; k < N; ++k) {
     if (with_xi) xi[k] = 0.0;
     if (with_tau) inv_tau[k] = 0.0;
   }
   const double *pref_ki = L.pref_ki.data(), *pref_ik = L.pref_ik.data(), *mu_ki = L.mu_ki.data(), *mu_ik = L.mu_ik.data();
-  const double *W2 = L.W2.data(), *D = L.D.data();
   constexpr std::size_t B = 256;
   double row_terms_xi[B], row_terms_tau[B];
   std::size_t l = 0;  // index of the link (k, k)
@@ -138,37 +139,36 @@ void pair_pass(std::size_t N, const double* __restrict T, const double* __restri
 
 void CollisionRates::symmetric_sums(const double* T, double* xi, double* inv_tau) const {
   const std::size_t N = mix_.size();
+  const double *W2 = links_.W2.data(), *D = links_.D.data();
+  std::vector<double> W2_at_T, D_at_T;
+  if (law_.is_viscoelastic()) {
+    // The moments depend on the pair and on V = T_k/m_k + T_i/m_i only, which both directions
+    // share: one evaluation (two quadratures) per unordered pair instead of one per ordered pair
+    // and per output (a quarter of the quadratures for ξ and τ_v⁻¹ together).
+    W2_at_T.resize(links_.W2.size()), D_at_T.resize(links_.D.size());
+    for (std::size_t k = 0, l = 0; k < N; ++k)
+      for (std::size_t i = k; i < N; ++i, ++l) {
+        const CollisionMoments W = moments(k, i, T[k] * inv_m_[k] + T[i] * inv_m_[i]);
+        W2_at_T[l] = W.W2, D_at_T[l] = W.D;
+      }
+    W2 = W2_at_T.data(), D = D_at_T.data();
+  }
   const auto xi_f = [](auto... a) { return xi_formula(a...); };  // lambdas: inlined into the pass
   const auto tau_f = [](auto... a) { return inv_tau_formula(a...); };
   if (xi && inv_tau)
-    pair_pass<true, true>(N, T, inv_m_.data(), links_, xi, inv_tau, xi_f, tau_f);
+    pair_pass<true, true>(N, T, inv_m_.data(), links_, W2, D, xi, inv_tau, xi_f, tau_f);
   else if (xi)
-    pair_pass<true, false>(N, T, inv_m_.data(), links_, xi, nullptr, xi_f, tau_f);
+    pair_pass<true, false>(N, T, inv_m_.data(), links_, W2, D, xi, nullptr, xi_f, tau_f);
   else
-    pair_pass<false, true>(N, T, inv_m_.data(), links_, nullptr, inv_tau, xi_f, tau_f);
+    pair_pass<false, true>(N, T, inv_m_.data(), links_, W2, D, nullptr, inv_tau, xi_f, tau_f);
 }
 
-void CollisionRates::xi_all(const double* T, double* out) const {
-  if (law_.is_viscoelastic())
-    for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = xi_species(k, T);
-  else
-    symmetric_sums(T, out, nullptr);
-}
+void CollisionRates::xi_all(const double* T, double* out) const { symmetric_sums(T, out, nullptr); }
 
-void CollisionRates::inv_tau_v_all(const double* T, double* out) const {
-  if (law_.is_viscoelastic())
-    for (std::size_t k = 0; k < mix_.size(); ++k) out[k] = inv_tau_v_species(k, T);
-  else
-    symmetric_sums(T, nullptr, out);
-}
+void CollisionRates::inv_tau_v_all(const double* T, double* out) const { symmetric_sums(T, nullptr, out); }
 
 void CollisionRates::xi_and_inv_tau_v_all(const double* T, double* xi, double* inv_tau) const {
-  if (law_.is_viscoelastic()) {
-    xi_all(T, xi);
-    inv_tau_v_all(T, inv_tau);
-  } else {
-    symmetric_sums(T, xi, inv_tau);
-  }
+  symmetric_sums(T, xi, inv_tau);
 }
 
 double CollisionRates::diffusion(std::size_t k, const double* T) const {

@@ -77,8 +77,9 @@ class CollisionRates {
                                 const CollisionMoments& W) {
     return pref * (sqrtV * mu) * (1.0 + mu_k * (Ti - Tk) / Tk) * W.W2 * 0.5;
   }
-  // Constant law: Σ_i over all pairs for every k, each unordered pair once with √V shared, the sum for
-  // each k in the order i = 0 … N−1 (as the single-species sums); xi or inv_tau may be null.
+  // Σ_i over all pairs for every k, each unordered pair once with √V (and a viscoelastic pair's
+  // moments) shared, the sum for each k in the order i = 0 … N−1 (as the single-species sums, same
+  // numbers); xi or inv_tau may be null.
   void symmetric_sums(const double* T, double* xi, double* inv_tau) const;
 
   model::Mixture mix_;

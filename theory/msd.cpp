@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "model/enum_names.hpp"
@@ -49,7 +50,15 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
   if (t <= 0.0) return 0.0;
   model::use_gsl_return_codes();
   Eq17Integrand integrand{&h, k, h.reduced_time(t, k), std::vector<double>(h.species())};
-  gsl_function f{[](double s, void* p) { return (*static_cast<Eq17Integrand*>(p))(s); }, &integrand};
+  struct Callback {
+    Eq17Integrand& f;
+    model::GslCallbackGuard guard;  // viscoelastic rates are quadratures that may throw
+  } cb{integrand, {}};
+  gsl_function f{[](double s, void* p) {
+                   auto& c = *static_cast<Callback*>(p);
+                   return c.guard.run(std::numeric_limits<double>::quiet_NaN(), [&] { return c.f(s); });
+                 },
+                 &cb};
   double result = 0.0, abserr = 0.0;
   // The integrand comes from CVODE's interpolant, which jumps by ~rtol at step boundaries: asking
   // the quadrature for less than 10 rtol is asking for noise. At the default rtol 1e-11 this is
@@ -57,6 +66,7 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
   const double epsrel = std::max(1e-9, 10.0 * h.rtol());
   const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, epsrel, model::quadrature_intervals,
                                           GSL_INTEG_GAUSS21, model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
+  cb.guard.rethrow();
   if (status != GSL_SUCCESS)
     throw NumericalError(std::string("MSD Eq. (17) quadrature (gsl_integration_qag) at t = ") + std::to_string(t) +
                          ": " + gsl_strerror(status));

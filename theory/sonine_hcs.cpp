@@ -76,32 +76,39 @@ std::vector<double> solve_many(Problem& p) {
   const CollisionRates rates(p.mix, p.alpha, p.chi);
   const std::vector<double> start = settled_ratios(rates);
   const std::size_t n = p.N - 1;
-  gsl_vector* x = gsl_vector_alloc(n);
-  for (std::size_t k = 0; k < n; ++k) gsl_vector_set(x, k, std::log(start[k + 1]));
+  const model::GslPtr<gsl_vector, gsl_vector_free> x(gsl_vector_alloc(n));
+  if (x == nullptr) throw NumericalError("gsl_vector_alloc failed");
+  for (std::size_t k = 0; k < n; ++k) gsl_vector_set(x.get(), k, std::log(start[k + 1]));
+  struct Callback {
+    Problem& p;
+    model::GslCallbackGuard guard;
+  } cb{p, {}};
   auto residual = [](const gsl_vector* xv, void* params, gsl_vector* out) -> int {
-    auto& pr = *static_cast<Problem*>(params);
-    std::vector<double> xs(pr.N, 0.0);
-    for (std::size_t k = 1; k < pr.N; ++k) xs[k] = gsl_vector_get(xv, k - 1);
-    const Evaluation e = evaluate(pr, temperatures(pr, xs.data()));
-    for (std::size_t k = 1; k < pr.N; ++k) gsl_vector_set(out, k - 1, relative_difference(e.zeta[k], e.zeta[0]));
-    return GSL_SUCCESS;
+    auto& c = *static_cast<Callback*>(params);
+    return c.guard.run(int(GSL_EBADFUNC), [&] {
+      std::vector<double> xs(c.p.N, 0.0);
+      for (std::size_t k = 1; k < c.p.N; ++k) xs[k] = gsl_vector_get(xv, k - 1);
+      const Evaluation e = evaluate(c.p, temperatures(c.p, xs.data()));
+      for (std::size_t k = 1; k < c.p.N; ++k) gsl_vector_set(out, k - 1, relative_difference(e.zeta[k], e.zeta[0]));
+      return int(GSL_SUCCESS);
+    });
   };
-  gsl_multiroot_function F{residual, n, &p};
-  gsl_multiroot_fsolver* s = gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n);
-  if (s == nullptr || x == nullptr) throw NumericalError("gsl_multiroot_fsolver_alloc failed");
-  int status = gsl_multiroot_fsolver_set(s, &F, x);
+  gsl_multiroot_function F{residual, n, &cb};
+  const model::GslPtr<gsl_multiroot_fsolver, gsl_multiroot_fsolver_free> s(
+      gsl_multiroot_fsolver_alloc(gsl_multiroot_fsolver_hybrids, n));
+  if (s == nullptr) throw NumericalError("gsl_multiroot_fsolver_alloc failed");
+  int status = gsl_multiroot_fsolver_set(s.get(), &F, x.get());
   for (int it = 0; status == GSL_SUCCESS && it < 200; ++it) {
-    status = gsl_multiroot_fsolver_iterate(s);
+    status = gsl_multiroot_fsolver_iterate(s.get());
     if (status != GSL_SUCCESS) break;
     status = gsl_multiroot_test_residual(s->f, 1e-14);  // relative ζ differences at rounding level
     if (status == GSL_SUCCESS) break;
     if (status == GSL_CONTINUE) status = GSL_SUCCESS;
   }
+  cb.guard.rethrow();
   std::vector<double> xs(p.N, 0.0);
   for (std::size_t k = 1; k < p.N; ++k) xs[k] = gsl_vector_get(s->x, k - 1);
   const double worst = gsl_vector_max(s->f) > -gsl_vector_min(s->f) ? gsl_vector_max(s->f) : -gsl_vector_min(s->f);
-  gsl_multiroot_fsolver_free(s);
-  gsl_vector_free(x);
   if (worst > 1e-10)
     throw NumericalError(std::string("Sonine temperature ratios (gsl_multiroot hybrids): ") + gsl_strerror(status) +
                          ", max relative ζ difference " + std::to_string(worst));

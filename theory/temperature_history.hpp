@@ -28,12 +28,15 @@
 
 namespace granmix::theory {
 
+// Above this many unknowns (ln T_k, companions) the automatic solver switches from dense LU to GMRES.
+inline constexpr std::size_t dense_unknowns_max = 256;
+
 struct TemperatureOptions {
   double rtol = 1e-11;  // relative tolerance of CVODE (ln T also gets atol = rtol)
   bool reduced_time = false;
   bool diffusion_integral = false;
   bool vacf = false;
-  enum class Solver { automatic, dense, gmres } solver = Solver::automatic;  // automatic: dense up to 64 unknowns
+  enum class Solver { automatic, dense, gmres } solver = Solver::automatic;  // automatic: dense up to dense_unknowns_max
   // Earliest time at which the companions must be accurate (0: 1e-8 of the clock's time unit).
   // Their absolute tolerances are rtol times their size there; see temperature_history.cpp.
   double t_first = 0.0;

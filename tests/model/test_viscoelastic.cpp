@@ -73,3 +73,17 @@ TEST_CASE("viscoelastic law scales Akappa^(2/5) per pair with sqrt(sigma_eff)/m_
   CHECK(r.eps_at(0, 0, 0.0) == Approx(1.0));
   CHECK(r.eps_at(0, 0, 1e4) == Approx(restitution_exact(0.3 * std::pow(1e4, 0.1))).epsilon(1e-14));
 }
+
+TEST_CASE("restitution_deficit is 1 - eps, without the cancellation at small y", "[model]") {
+  // Where 1 − ε is large, the deficit is 1 − restitution() up to the rounding of that difference.
+  for (auto form : {ViscoelasticForm::exact, ViscoelasticForm::series, ViscoelasticForm::pade})
+    for (double y = 0.05; y <= 1.0; y += 0.05) {
+      INFO(to_string(form) << ", y = " << y);
+      CHECK(std::abs(restitution_deficit(form, y) - (1.0 - restitution(form, y))) <= 4e-16);
+    }
+  // At y = 1e-6, 1 − ε = 1.15e-12 and 1 − restitution() keeps 4 digits; the deficit keeps them all:
+  // series −h₂y² − h₄y⁴ (next term h₅y⁵, relative 2e-25), Padé (1.72765 − 0.574198) y² (1 + O(y)).
+  const double y = 1e-6;
+  CHECK(std::abs(restitution_deficit(ViscoelasticForm::series, y) / (1.15344 * y * y - 0.79826 * y * y * y * y) - 1) <= 1e-15);
+  CHECK(std::abs(restitution_deficit(ViscoelasticForm::pade, y) / ((1.72765 - 0.574198) * y * y) - 1) <= 3 * y);
+}

@@ -1,9 +1,12 @@
-// Randomized physics properties of the kinetic theory (issue 15), 200 mixtures from a fixed seed:
+// Randomized physics properties of the kinetic theory (issue 15), 200 mixtures per property from
+// fixed seeds (random_mixtures.hpp):
 //  - the settled ratios make every ξ_k equal to 1e-10 of the rate scale, or the solver says why
 //    (NumericalError naming itself);
-//  - from equal temperatures, every T_k stays positive and finite up to t = 1e12;
-//  - the MSD (VACF form) increases, starts ballistic 3 T_k t²/m_k, and for constant ε < 1 grows as
-//    6 D_k τ₀ ln t at late times (v2 Eq. 23; the VACF ODE has the same limit, derived below).
+//  - from equal temperatures, every T_k stays positive and finite up to t = 1e12, and the MSD (VACF
+//    form) increases and starts ballistic, 3 T_k t²/m_k;
+//  - constant ε < 1, from the settled state: the VACF MSD is v2 Eq. (22) at all times and grows as
+//    6 D_k τ₀ ln t at late times (v2 Eq. 23);
+//  - viscoelastic: the MSD grows as t^(1/6) at late times (v1 Fig. 9 text).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -12,6 +15,7 @@
 #include "random_mixtures.hpp"
 #include "theory/collision_rates.hpp"
 #include "theory/diffusion.hpp"
+#include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/temperature_history.hpp"
 
@@ -20,21 +24,27 @@ using namespace granmix::theory;
 
 namespace {
 
-// 180 settled-ratio cases were verified (under the sanitizers in 3 min CPU); the MSD and
-// temperature properties below are written but not yet run to the end: hidden ([.]) until measured.
-constexpr int cases = 180;
+constexpr int cases = 200;
 
 CollisionRates rates_of(const test::RandomMixture& m) {
   return CollisionRates(m.mixture, m.law, model::dilute_contact_values(m.mixture.size()));
+}
+
+// ξ_k and τ_v,k⁻¹ at the temperatures T.
+struct RatesAt {
+  std::vector<double> xi, inv;
+};
+RatesAt rates_at(const CollisionRates& r, const std::vector<double>& T) {
+  RatesAt a{std::vector<double>(T.size()), std::vector<double>(T.size())};
+  r.xi_and_inv_tau_v_all(T.data(), a.xi.data(), a.inv.data());
+  return a;
 }
 
 // max_k |ξ_k − ξ_1| / scale with the solver's own scale max_k(|ξ_k|, τ_v,k⁻¹) (settled_ratios.hpp):
 // ξ_1 alone is no scale at ε = 1, where every ξ_k is 0.
 double settled_residual(const CollisionRates& r, const std::vector<double>& T) {
   const std::size_t N = T.size();
-  std::vector<double> xi(N), inv(N);
-  r.xi_all(T.data(), xi.data());
-  r.inv_tau_v_all(T.data(), inv.data());
+  const auto [xi, inv] = rates_at(r, T);
   double scale = 0.0, worst = 0.0;
   for (std::size_t k = 0; k < N; ++k) scale = std::max({scale, std::abs(xi[k]), inv[k]});
   for (std::size_t k = 1; k < N; ++k) worst = std::max(worst, std::abs(xi[k] - xi[0]));
@@ -68,8 +78,11 @@ TEST_CASE("property: settled ratios equalise the cooling rates to 1e-10 or the s
   std::printf("settled ratios: %d solved (worst residual %.2e), %d refused with NumericalError\n", solved, worst, refused);
 }
 
-TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD increasing and ballistic at short times", "[.][property-unverified]") {
-  test::MixtureSampler sample(15002);
+// Regression: cases 67 and 71 (elastic, 23 and 26 species) failed with CV_CONV_FAILURE under the
+// old automatic GMRES solver (temperature_history.cpp). Viscoelastic mixtures here have at most 3 species: a history to 1e12 with the VACF takes ~5000
+// right-hand sides of N(N+1)/2 quadrature pairs (8 species: 5 s of CPU each, 40 of them).
+TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD increasing and ballistic at short times", "[property]") {
+  test::MixtureSampler sample(15002, 3);
   double worst_ballistic = 0.0;
   for (int c = 0; c < cases; ++c) {
     const test::RandomMixture m = sample.next();
@@ -79,9 +92,7 @@ TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD inc
     const std::vector<double> T0(N, 1.0);
     // The ballistic check time: 1e-4 of the fastest rate of any species, where the MSD is
     // 3 T t²/m (1 + O(t/τ)); the O(t/τ) terms are bounded by t (τ_v,k⁻¹ + |ξ_k|) (bound below).
-    std::vector<double> xi(N), inv(N);
-    r.xi_all(T0.data(), xi.data());
-    r.inv_tau_v_all(T0.data(), inv.data());
+    const auto [xi, inv] = rates_at(r, T0);
     double fastest = 0.0;
     for (std::size_t k = 0; k < N; ++k) fastest = std::max(fastest, inv[k] + std::abs(xi[k]));
     const double t_ball = 1e-4 / fastest;
@@ -115,13 +126,20 @@ TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD inc
 }
 
 // From the settled state, T_k = T_k*/(1 + t/τ₀)² and every rate ∝ 1/(τ₀ + t); the VACF ODE
-// dJ/dt = 3T_k/m_k − J(τ_v,k⁻¹ + ξ_k/2) then has the particular solution J = 3 T_k* τ₀ τ_v,k /(m_k(τ₀+t)) (using ξ = 2/(τ₀+t)),
-// so d⟨R²⟩/d ln t = 2 J t → 6 D_k τ₀. Between t₁ and t₂ = 10 t₁ the finite-difference slope differs
-// by at most τ₀/t₁ (ln(τ₀+t) against ln t) plus the homogeneous solution, which decays as
-// (t₁/τ₀)^(−τ₀/τ_v,k); tolerance = their sum + 1e-6 (integrator).
-TEST_CASE("property: constant eps < 1 - the MSD grows as 6 D_k tau0 ln t at late times", "[.][property-unverified]") {
+// dJ/dt = 3T_k/m_k − J(τ_v,k⁻¹ + ξ_k/2), J(0) = 0, with ξ = 2/(τ₀+t) and a = τ₀/τ_v,k is then solved by
+// J = 3 D_k τ₀/(τ₀+t) · [1 − (1+t/τ₀)^(−a)], i.e. ⟨R²⟩ = 2∫J dt is v2 Eq. (22) exactly (msd_closed).
+// Check 1: the ODE against it at 25 times from 1e-4 of the fastest time to the end, to 1e-6 (CVODE at
+//   rtol 1e-11 over < 1e5 steps; measured below). A decay rate without ξ/2 (physics.md §3) changes
+//   ⟨R²⟩ by O(ξ τ_v) at t ~ τ_v, a wrong time unit by O(1).
+// Check 2, the late-time law (v2 Eq. 23): between t₁ and t₂ = 10 t₁, the slope Δ⟨R²⟩/Δ ln t differs
+//   from 6 D_k τ₀ by the two corrections of Eq. (22): ln(1+t/τ₀) against ln t, at most τ₀/t₁, and the
+//   transient, whose share of the slope is (1+t₁/τ₀)^(−a)(1 − 10^(−a))/(a ln 10) <= (t₁/τ₀)^(−a). A
+//   species is in the ln t regime once that share is below 1e-4: t₁ = τ₀ max(1e4, 1e4^(1/a)), taken
+//   while t₁ <= 1e8 τ₀ (slower species are covered by check 1 only). Tolerance: the sum + 1e-6.
+TEST_CASE("property: constant eps < 1 - the MSD is v2 Eq. 22 and grows as 6 D_k tau0 ln t at late times", "[property]") {
   test::MixtureSampler sample(15003);
-  int checked = 0;
+  int checked = 0, law_species = 0, species = 0;
+  double worst_closed = 0.0, worst_law = 0.0;
   for (int c = 0; c < cases; ++c) {
     const test::RandomMixture m = sample.next();
     if (m.viscoelastic || m.eps == 1.0) continue;
@@ -134,21 +152,99 @@ TEST_CASE("property: constant eps < 1 - the MSD grows as 6 D_k tau0 ln t at late
     } catch (const NumericalError&) {
       continue;  // counted by the settled-ratio property
     }
-    double tau_v_max = 0.0;
-    for (double tv : d.tau_v) tau_v_max = std::max(tau_v_max, tv);
-    const double t1 = 1e4 * std::max(d.tau0, tau_v_max), t2 = 10 * t1;
+    double tau_v_min = d.tau0, t1 = 1e4 * d.tau0;
+    for (double tv : d.tau_v) {
+      tau_v_min = std::min(tau_v_min, tv);
+      const double need = d.tau0 * std::pow(1e4, std::max(1.0, tv / d.tau0));
+      if (need <= 1e8 * d.tau0) t1 = std::max(t1, need);
+    }
+    const double t2 = 10 * t1, t_first = 1e-4 * tau_v_min;
     TemperatureOptions opt;
     opt.vacf = true;
+    opt.t_first = t_first;
     const TemperatureHistory h(r, d.T, t2, opt);
     for (std::size_t k = 0; k < N; ++k) {
+      ++species;
+      for (int j = 0; j <= 24; ++j) {
+        const double t = t_first * std::pow(t2 / t_first, j / 24.0);
+        const double closed = msd_closed(d.D[k], d.tau_v[k], d.tau0, t), dev = std::abs(h.msd_vacf(t, k) / closed - 1);
+        worst_closed = std::max(worst_closed, dev);
+        INFO("species " << k + 1 << ", t = " << t << ": VACF MSD / Eq. 22 - 1 = " << dev);
+        CHECK(dev <= 1e-6);
+      }
+      const double a = d.tau0 / d.tau_v[k], transient = std::pow(t1 / d.tau0, -a);
+      if (transient > 1e-4) continue;
+      ++law_species;
       const double slope = (h.msd_vacf(t2, k) - h.msd_vacf(t1, k)) / std::log(10.0);
-      const double expected = 6 * d.D[k] * d.tau0;
-      const double tol = d.tau0 / t1 + std::pow(t1 / d.tau0, -d.tau0 / d.tau_v[k]) + 1e-6;
+      const double expected = 6 * d.D[k] * d.tau0, tol = d.tau0 / t1 + transient + 1e-6;
+      const double dev = std::abs(slope / expected - 1);
+      worst_law = std::max(worst_law, dev / tol);
       INFO("species " << k + 1 << ": slope " << slope << ", 6 D tau0 " << expected << ", tol " << tol);
-      CHECK(std::abs(slope / expected - 1) <= tol);
+      CHECK(dev <= tol);
     }
     ++checked;
   }
-  std::printf("late-time ln t law: %d mixtures checked\n", checked);
+  std::printf("constant eps MSD: %d mixtures, %d species; VACF against Eq. 22: worst %.1e (bound 1e-6); "
+              "ln t law reached by %d species, worst deviation %.2f of its bound\n",
+              checked, species, worst_closed, law_species, worst_law);
   CHECK(checked > cases / 2);
+  CHECK(law_species > species / 2);
+}
+
+// Viscoelastic gas at late times (physics.md §2–3): T ∝ t^(−5/3) and ν_k = τ_v,k⁻¹ + ξ_k/2 ∝ √T, so
+// once J follows its quasi-static value 3T_k/(m_k ν_k) the MSD grows as ∫ T/ν dt ∝ t^(1/6). The
+// decade exponent p = log10(Δ⟨R²⟩[10t₁, 100t₁] / Δ⟨R²⟩[t₁, 10t₁]) then equals 1 − q_k + r_k with the
+// measured exponents q_k = −Δln T_k/Δln t, r_k = −Δln ν_k/Δln t over [t₁, 100t₁] (5/3 and 5/6 in the
+// limit: their departures, from the residual dissipation ∝ T^(1/10) and the drift of the ratios, are
+// part of the bound), up to the lag of J behind its quasi-static value, a relative 1/(ν_k t) that
+// changes the exponent by less than 1/(ν_k t₁). So |p − 1/6| <= |q_k − 5/3| + |r_k − 5/6| +
+// 1/(ν_k t₁) + 1e-6. t₁ = 1e24 t_c (t_c = 2/ξ̄(0)). The bound is small only where the species has
+// reached the late-time regime: where it is below 1/12 (half the 1/6 by which a ln t law, p = 0,
+// would miss) the check discriminates; at least 3/4 of the species must be there (those left out
+// are partners of very different mass whose ratios still drift towards equipartition: T ∝ t^(−1.8)).
+// Regression: at these times the (1 − ε) moment quadrature gave up with GSL "roundoff error"
+// (case 35) before model::restitution_deficit.
+TEST_CASE("property: viscoelastic - the MSD grows as t^(1/6) at late times", "[property]") {
+  test::MixtureSampler sample(15006, 3);
+  int checked = 0, species = 0, late = 0;
+  double worst = 0.0;
+  for (int c = 0; c < cases && checked < 12; ++c) {
+    const test::RandomMixture m = sample.next();
+    if (!m.viscoelastic) continue;
+    INFO("case " << c << ": " << m.describe());
+    const CollisionRates r = rates_of(m);
+    const std::size_t N = m.mixture.size();
+    const std::vector<double> T0(N, 1.0);
+    const std::vector<double> xi0 = rates_at(r, T0).xi;
+    double loss = 0.0, energy = 0.0;
+    for (std::size_t k = 0; k < N; ++k) loss += m.mixture[k].density * xi0[k], energy += m.mixture[k].density;
+    const double t1 = 1e24 * 2.0 / (loss / energy), t2 = 10 * t1, t3 = 100 * t1;
+    TemperatureOptions opt;
+    opt.vacf = true;
+    const TemperatureHistory h(r, T0, t3, opt);
+    auto nu_at = [&](double t) {  // ν_k = τ_v,k⁻¹ + ξ_k/2, the VACF's decay rate
+      std::vector<double> T(N), nu(N);
+      h.temperatures(t, T.data());
+      const auto [xi, inv] = rates_at(r, T);
+      for (std::size_t k = 0; k < N; ++k) nu[k] = inv[k] + xi[k] / 2;
+      return nu;
+    };
+    const std::vector<double> nu1 = nu_at(t1), nu3 = nu_at(t3);
+    for (std::size_t k = 0; k < N; ++k) {
+      const double p = std::log10((h.msd_vacf(t3, k) - h.msd_vacf(t2, k)) / (h.msd_vacf(t2, k) - h.msd_vacf(t1, k)));
+      const double q = -std::log10(h.temperature(t3, k) / h.temperature(t1, k)) / 2;
+      const double rk = -std::log10(nu3[k] / nu1[k]) / 2;
+      const double bound = std::abs(q - 5.0 / 3) + std::abs(rk - 5.0 / 6) + 1 / (nu1[k] * t1) + 1e-6;
+      worst = std::max(worst, std::abs(p - 1.0 / 6) / bound);
+      INFO("species " << k + 1 << ": exponent " << p << ", T exponent " << -q << ", nu exponent " << -rk << ", bound " << bound);
+      CHECK(std::abs(p - 1.0 / 6) <= bound);
+      ++species;
+      if (bound < 1.0 / 12) ++late;
+    }
+    ++checked;
+  }
+  std::printf("viscoelastic MSD ~ t^(1/6): %d mixtures, %d of %d species in the late regime (bound < 1/12), "
+              "worst deviation %.2f of its bound\n", checked, late, species, worst);
+  CHECK(checked == 12);
+  CHECK(4 * late >= 3 * species);
 }
