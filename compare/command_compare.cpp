@@ -1,10 +1,12 @@
 // granmix compare SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
 // granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N] (also DIR/index.html)
+// Both also [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS] (checkpoint_options.hpp).
 // (design.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
+#include "checkpoint_options.hpp"
 #include "commands.hpp"
 #include "interrupts.hpp"
 #include "html_report.hpp"
@@ -20,6 +22,8 @@ struct RunOptions {
   std::string out = "out", fidelity = "quick", scenes;
   std::uint64_t seed = 1;
   int threads = 0;
+  CheckpointFlags checkpoint;
+  std::shared_ptr<dsmc::Checkpointing> checkpointing;  // from the flags, once the scenes are known
 };
 
 void add_run_options(CLI::App* cmd, RunOptions& o) {
@@ -27,11 +31,13 @@ void add_run_options(CLI::App* cmd, RunOptions& o) {
   cmd->add_option("--fidelity", o.fidelity, "quick or paper")->check(CLI::IsMember({"quick", "paper"}))->capture_default_str();
   cmd->add_option("--seed", o.seed, "master seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  add_checkpoint_flags(cmd, o.checkpoint);
 }
 
 dsmc::RunOptions run_options(const RunOptions& o) {
   dsmc::RunOptions r;
   r.fidelity = o.fidelity, r.seed = o.seed, r.threads = o.threads;
+  r.checkpoint = o.checkpointing.get();
   return r;
 }
 
@@ -52,6 +58,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const model::Scene s = model::load_scene(*scene);
+    o->checkpointing = start_checkpointing(o->checkpoint, {s}, run_options(*o));
     const SceneOutcome r = compare_scene(s, o->out, run_options(*o));
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
     std::printf("-> %s/%s/ (%s)\n", o->out.c_str(), s.name.c_str(), r.figure.c_str());
@@ -73,6 +80,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     for (const auto& e : std::filesystem::directory_iterator(dir))
       if (e.path().extension() == ".toml") files.push_back(e.path());
     std::sort(files.begin(), files.end());
+    o->checkpointing = start_checkpointing(o->checkpoint, loadable_scenes({files.begin(), files.end()}), run_options(*o));
     std::vector<SceneOutcome> all;
     std::vector<std::string> errors;
     std::printf("%s", summary_header().c_str());

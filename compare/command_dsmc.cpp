@@ -1,4 +1,5 @@
 // granmix dsmc SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
+//   [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS]
 //   -> DIR/<scene>/dsmc.tsv with mean and standard-error columns (design.md §3–4), and an
 //   end-of-run summary on stdout; a progress line on stderr when stderr is a terminal.
 #include <sys/resource.h>
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "checkpoint_options.hpp"
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
 #include "interrupts.hpp"
@@ -23,6 +25,7 @@ struct DsmcOptions {
   std::string scene, out = "out", fidelity = "quick";
   std::uint64_t seed = 1;
   int threads = 0;
+  CheckpointFlags checkpoint;
 };
 
 int run(const DsmcOptions& o) {
@@ -33,7 +36,10 @@ int run(const DsmcOptions& o) {
   auto progress = [&](std::size_t done, std::size_t total) {
     if (tty) std::fprintf(stderr, "\r%s: replica %zu/%zu done", s.name.c_str(), done, total);
   };
-  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, {o.fidelity, o.seed, o.threads, progress});
+  dsmc::RunOptions options{o.fidelity, o.seed, o.threads, progress};
+  const auto checkpointing = start_checkpointing(o.checkpoint, {s}, options);
+  options.checkpoint = checkpointing.get();
+  const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, options);
   if (tty) std::fprintf(stderr, "\n");
   Provenance p;
   p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
@@ -72,6 +78,7 @@ std::function<int()> add_dsmc_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", o->seed, "master seed")->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  add_checkpoint_flags(cmd, o->checkpoint);
   return [o]() { return run(*o); };
 }
 
