@@ -28,8 +28,8 @@ std::string os_error() { return std::strerror(errno); }
 std::filesystem::path snapshot_path(const DsmcSetup& s, std::size_t r) { return unit_file(s, r, ".snap"); }
 std::filesystem::path done_path(const DsmcSetup& s, std::size_t r) { return unit_file(s, r, ".done"); }
 
-SnapshotIdentity snapshot_identity(const DsmcSetup& s, std::size_t r) {
-  return {s.checkpoint->granmix_version, s.scene_sha256, s.unit_key, r};
+SnapshotIdentity snapshot_identity(const Checkpointing& c, const DsmcSetup& s, std::size_t r) {
+  return {c.granmix_version, s.scene_sha256, s.unit_key, r};
 }
 
 std::optional<std::string> read_checkpoint_file(const std::filesystem::path& file) {
@@ -102,9 +102,9 @@ void verify_checkpoint_folder(const Checkpointing& c, const std::vector<DsmcSetu
     const std::size_t r = std::stoull(index);
     const std::string bytes = read_checkpoint_file(e.path()).value_or("");
     if (ext == ".done") {
-      (void)decode_done(bytes, file, snapshot_identity(s, r));
+      (void)decode_done(bytes, file, snapshot_identity(c, s, r));
     } else {
-      check_snapshot(s, r, decode_snapshot(bytes, file, snapshot_identity(s, r)), file);
+      check_snapshot(s, r, decode_snapshot(bytes, file, snapshot_identity(c, s, r)), file);
     }
   }
 }

@@ -15,7 +15,8 @@ namespace granmix::dsmc {
 
 std::filesystem::path snapshot_path(const DsmcSetup& s, std::size_t r);
 std::filesystem::path done_path(const DsmcSetup& s, std::size_t r);
-SnapshotIdentity snapshot_identity(const DsmcSetup& s, std::size_t r);
+// Who writes replica r of a set-up into the folder c.
+SnapshotIdentity snapshot_identity(const Checkpointing& c, const DsmcSetup& s, std::size_t r);
 
 // The whole file, or nothing if it does not exist; InputError if it cannot be read.
 std::optional<std::string> read_checkpoint_file(const std::filesystem::path& file);

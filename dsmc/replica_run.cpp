@@ -122,7 +122,7 @@ class ReplicaCheckpoint {
     const auto path = snapshot_path(s_, r_);
     const auto bytes = read_checkpoint_file(path);
     if (!bytes) return std::nullopt;
-    ReplicaSnapshot snap = decode_snapshot(*bytes, path.string(), snapshot_identity(s_, r_));
+    ReplicaSnapshot snap = decode_snapshot(*bytes, path.string(), snapshot_identity(*s_.checkpoint, s_, r_));
     check_snapshot(s_, r_, snap, path.string());
     return snap;
   }
@@ -136,7 +136,7 @@ class ReplicaCheckpoint {
     if (!stop && std::chrono::duration<double>(now - last_).count() < s_.checkpoint->every_seconds) return;
     ReplicaSnapshot snap;
     fill(snap, true);
-    const std::string bytes = encode_snapshot(snapshot_identity(s_, r_), snap);
+    const std::string bytes = encode_snapshot(snapshot_identity(*s_.checkpoint, s_, r_), snap);
     fill(snap, false);
     const auto path = snapshot_path(s_, r_);
     write_checkpoint_file(path, bytes);
@@ -149,7 +149,7 @@ class ReplicaCheckpoint {
   }
   void finish(const ReplicaRecord& out) const {
     if (!on_) return;
-    write_checkpoint_file(done_path(s_, r_), encode_done(snapshot_identity(s_, r_), out));
+    write_checkpoint_file(done_path(s_, r_), encode_done(snapshot_identity(*s_.checkpoint, s_, r_), out));
     std::error_code ec;
     std::filesystem::remove(snapshot_path(s_, r_), ec);  // the .done supersedes it
   }
@@ -327,7 +327,7 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
   ReplicaCheckpoint ck(s, r);
   if (ck.on()) {
     const auto done = done_path(s, r);
-    if (const auto bytes = read_checkpoint_file(done)) return decode_done(*bytes, done.string(), snapshot_identity(s, r));
+    if (const auto bytes = read_checkpoint_file(done)) return decode_done(*bytes, done.string(), snapshot_identity(*s.checkpoint, s, r));
   }
   StopRequest* stop = ck.on() ? s.checkpoint->stop : nullptr;
   if (stop && !stop->enter()) StopRequest::wait_for_exit();  // stopping: start nothing new

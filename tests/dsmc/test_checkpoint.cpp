@@ -149,14 +149,14 @@ TEST_CASE("damaged and foreign checkpoint files are refused naming the file and 
   refused(swapped, "other byte order");
   refused("hello", "not a granmix checkpoint");
   // Another version and another scene: valid files of another identity.
-  dsmc::SnapshotIdentity id = dsmc::snapshot_identity(s, 0);
+  dsmc::SnapshotIdentity id = dsmc::snapshot_identity(ck, s, 0);
   dsmc::ReplicaSnapshot x = dsmc::decode_snapshot(good, "f", id);
   id.granmix_version = "0.0.9 (old)";
   refused(dsmc::encode_snapshot(id, x), "written by granmix 0.0.9");
-  id = dsmc::snapshot_identity(s, 0), id.scene_sha256 = std::string(64, 'b');
+  id = dsmc::snapshot_identity(ck, s, 0), id.scene_sha256 = std::string(64, 'b');
   refused(dsmc::encode_snapshot(id, x), "another scene");
   // A valid file that does not fit the run (one sample too few for its stop).
-  id = dsmc::snapshot_identity(s, 0);
+  id = dsmc::snapshot_identity(ck, s, 0);
   x.record.T.push_back(1.0);
   refused(dsmc::encode_snapshot(id, x), "samples taken so far");
   // A file of a unit the run does not plan.
