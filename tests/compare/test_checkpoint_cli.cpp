@@ -51,9 +51,7 @@ std::vector<std::filesystem::path> files_with(const std::filesystem::path& dir, 
   return v;
 }
 
-// Runs granmix with `args`, SIGKILLs it as soon as the checkpoint folder holds a snapshot, and returns
-// whether it was killed (false: it finished first).
-bool kill_after_first_snapshot(std::vector<std::string> args, const std::filesystem::path& ckpt) {
+pid_t spawn_granmix(std::vector<std::string> args, const std::filesystem::path& err) {
   args.insert(args.begin(), GRANMIX_EXE);
   std::vector<char*> argv;
   for (auto& a : args) argv.push_back(a.data());
@@ -61,11 +59,18 @@ bool kill_after_first_snapshot(std::vector<std::string> args, const std::filesys
   posix_spawn_file_actions_t fa;
   posix_spawn_file_actions_init(&fa);
   posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   pid_t pid = 0;
   const int spawned = posix_spawn(&pid, GRANMIX_EXE, &fa, nullptr, argv.data(), environ);
   posix_spawn_file_actions_destroy(&fa);
   REQUIRE(spawned == 0);
+  return pid;
+}
+
+// Runs granmix with `args`, SIGKILLs it as soon as the checkpoint folder holds a snapshot, and returns
+// whether it was killed (false: it finished first).
+bool kill_after_first_snapshot(std::vector<std::string> args, const std::filesystem::path& ckpt) {
+  const pid_t pid = spawn_granmix(std::move(args), "/dev/null");
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   int status = 0;
   while (std::chrono::steady_clock::now() < deadline) {
@@ -163,4 +168,29 @@ TEST_CASE("damaged or foreign checkpoints: exit 2 naming the file, nothing writt
   const auto r = test::run_granmix("dsmc " + cooling + " --out " + out.string() + " --restart " + (base / "nothing").string());
   CHECK(r.code == 2);
   CHECK(r.output.find("no such folder") != std::string::npos);
+}
+
+TEST_CASE("SIGTERM with checkpointing: every replica in flight writes a last snapshot, then exit 143", "[compare]") {
+  const auto base = test::fresh_dir("ckpt-sigterm");
+  const auto out = base / "out", ckpt = base / "ckpt", err = base / "stderr.txt";
+  // A scene of minutes; snapshots only every 600 s, so any snapshot is the signal's.
+  const pid_t pid = spawn_granmix({"dsmc", std::string(GRANMIX_SOURCE_DIR) + "/tests/scenes/interrupt-long-dsmc.toml", "--threads", "2",
+                                   "--out", out.string(), "--checkpoint", ckpt.string()},
+                                  err);
+  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // into the DSMC
+  REQUIRE(kill(pid, SIGTERM) == 0);
+  int status = 0;
+  REQUIRE(waitpid(pid, &status, 0) == pid);
+  const std::string message = read(err);
+  INFO(message);
+  CHECK((WIFEXITED(status) && WEXITSTATUS(status) == 143));
+  const auto snaps = files_with(ckpt, ".snap");
+  CHECK(snaps.size() == 2);  // two threads, two replicas in flight
+  CHECK(message.find("last snapshots of " + std::to_string(snaps.size()) + " replicas in flight written to " + ckpt.string()) !=
+        std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out / "interrupt-long-dsmc"));
+  for (const auto& f : snaps) {
+    const std::string bytes = read(f);
+    CHECK(dsmc::read_identity(bytes, f.string(), dsmc::SnapshotKind::in_flight).unit_key.rfind("interrupt-long-dsmc.quick.seed1.", 0) == 0);
+  }
 }
