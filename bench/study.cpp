@@ -5,7 +5,7 @@
 namespace granmix::bench {
 
 const std::vector<std::string>& study_names() {
-  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods", "gaps"};
+  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods", "gaps", "checkpoint"};
   return names;
 }
 
@@ -15,6 +15,7 @@ StudyResult run_study(const std::string& name, const StudyOptions& o) {
   if (name == "dsmc-error") return dsmc_error_study(o);
   if (name == "methods") return methods_study(o);
   if (name == "gaps") return gaps_study(o);
+  if (name == "checkpoint") return checkpoint_study(o);
   throw std::invalid_argument("bench: unknown study '" + name + "'");
 }
 

@@ -41,6 +41,7 @@ StudyResult theory_study(const StudyOptions& o);
 StudyResult dsmc_error_study(const StudyOptions& o);
 StudyResult methods_study(const StudyOptions& o);
 StudyResult gaps_study(const StudyOptions& o);  // issue 12: causes of the theory–DSMC gaps
+StudyResult checkpoint_study(const StudyOptions& o);  // issue 14: snapshot bytes and seconds
 
 // Study names in the order `granmix bench` runs them.
 const std::vector<std::string>& study_names();
