@@ -177,7 +177,19 @@ TEST_CASE("SIGTERM with checkpointing: every replica in flight writes a last sna
   const pid_t pid = spawn_granmix({"dsmc", std::string(GRANMIX_SOURCE_DIR) + "/tests/scenes/interrupt-long-dsmc.toml", "--threads", "2",
                                    "--out", out.string(), "--checkpoint", ckpt.string()},
                                   err);
-  std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // into the DSMC
+  // Into the DSMC: wait for a second of CPU time (the set-up takes milliseconds), not of wall time,
+  // which a loaded machine may spend before the replicas start.
+  auto cpu_ticks = [&] {
+    std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+    std::string field;
+    long ticks = 0;
+    for (int i = 1; i <= 15 && in >> field; ++i)
+      if (i >= 14) ticks += std::stol(field);  // utime, stime (a name without spaces: granmix)
+    return ticks;
+  };
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (cpu_ticks() < sysconf(_SC_CLK_TCK) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   REQUIRE(kill(pid, SIGTERM) == 0);
   int status = 0;
   REQUIRE(waitpid(pid, &status, 0) == pid);
