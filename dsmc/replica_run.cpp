@@ -127,7 +127,8 @@ class ReplicaCheckpoint {
     return snap;
   }
   // At a refresh point: a snapshot if the interval has passed or a stop was asked; after a stop's
-  // snapshot the thread waits for the process to end (stop_request.hpp). `fill` lends the state.
+  // snapshot the thread waits for the process to end (stop_request.hpp). fill(snapshot, true) lends
+  // the replica's state to the snapshot, fill(snapshot, false) takes it back.
   template <class Fill>
   void at_refresh(Fill fill) {
     if (!on_) return;
@@ -164,8 +165,8 @@ class ReplicaCheckpoint {
 // Moves the replica's large state into a snapshot and back (lent, not copied: a copy would double the
 // peak memory of a large run while it is written).
 template <class T>
-void lend(T& owner, T& snapshot, bool out) {
-  if (out) snapshot = std::move(owner);
+void lend(T& owner, T& snapshot, bool lending) {
+  if (lending) snapshot = std::move(owner);
   else owner = std::move(snapshot);
 }
 
@@ -215,10 +216,10 @@ ReplicaRecord run_event_replica(const DsmcSetup& s, const PairTable& pairs, std:
   std::size_t stop = first;
   if (ck.on())
     loop.at_refresh([&] {
-      ck.at_refresh([&](ReplicaSnapshot& x, bool out_) {
-        if (out_) x.aging = aging, x.stop = stop, x.rng = rng.state(), x.loop = loop.state(), x.counters = c;
-        lend(p, x.particles, out_), lend(out, x.record, out_);
-        lend(at_start, x.tamsd_start, out_), lend(sum, x.tamsd_sum, out_), lend(count, x.tamsd_weight, out_);
+      ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
+        if (lending) x.aging = aging, x.stop = stop, x.rng = rng.state(), x.loop = loop.state(), x.counters = c;
+        lend(p, x.particles, lending), lend(out, x.record, lending);
+        lend(at_start, x.tamsd_start, lending), lend(sum, x.tamsd_sum, lending), lend(count, x.tamsd_weight, lending);
       });
     });
   if (aging) {
@@ -276,9 +277,9 @@ ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, 
   if (snap) scheme.resume(snap->loop, snap->counters);
   if (ck.on())
     scheme.after_step([&] {
-      ck.at_refresh([&](ReplicaSnapshot& x, bool out_) {
-        if (out_) x.stop = j, x.rng = rng.state(), x.loop = scheme.state(), x.counters = c;
-        lend(p, x.particles, out_), lend(out, x.record, out_);
+      ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
+        if (lending) x.stop = j, x.rng = rng.state(), x.loop = scheme.state(), x.counters = c;
+        lend(p, x.particles, lending), lend(out, x.record, lending);
       });
     });
   out.seconds_setup += lap(clock);
