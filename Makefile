@@ -44,7 +44,7 @@ fuzz: deps
 	@scripts/install-deps.sh --fuzz
 	@CXX=clang++ cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" \
 	  -DGRANMIX_FUZZ=ON > /dev/null
-	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target fuzz_scene fuzz_hcs_args fuzz_tsv_roundtrip
+	@cmake --build $(FUZZ_BUILD) -j$(JOBS) --target fuzz_scene fuzz_hcs_args fuzz_tsv_roundtrip fuzz_checkpoint
 	@scripts/run-fuzzers.sh $(FUZZ_BUILD) $(FUZZ_SECONDS)
 
 # The mutation harness (tests/mutants/, not run by CI): plants each bug of mutants.toml in a scratch

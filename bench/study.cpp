@@ -5,7 +5,7 @@
 namespace granmix::bench {
 
 const std::vector<std::string>& study_names() {
-  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods", "gaps", "schedule"};
+  static const std::vector<std::string> names = {"selectors", "theory", "dsmc-error", "methods", "gaps", "checkpoint", "schedule"};
   return names;
 }
 
@@ -16,6 +16,7 @@ StudyResult run_study(const std::string& name, const StudyOptions& o) {
   if (name == "methods") return methods_study(o);
   if (name == "gaps") return gaps_study(o);
   if (name == "schedule") return schedule_study(o);
+  if (name == "checkpoint") return checkpoint_study(o);
   throw std::invalid_argument("bench: unknown study '" + name + "'");
 }
 

@@ -45,6 +45,7 @@ StudyResult dsmc_error_study(const StudyOptions& o);
 StudyResult methods_study(const StudyOptions& o);
 StudyResult gaps_study(const StudyOptions& o);  // issue 12: causes of the theory–DSMC gaps
 StudyResult schedule_study(const StudyOptions& o);  // issue 14: makespan on 1–256 ranks from measured units
+StudyResult checkpoint_study(const StudyOptions& o);  // issue 14: snapshot bytes and seconds
 
 // Study names in the order `granmix bench` runs them.
 const std::vector<std::string>& study_names();

@@ -47,7 +47,7 @@ int run(const BenchOptions& o) {
   for (const std::string& s : studies) {
     bool known = false;
     for (const auto& n : bench::study_names()) known = known || n == s;
-    if (!known) throw InputError("bench: unknown study '" + s + "' (allowed: selectors, theory, dsmc-error, methods, gaps, schedule)");
+    if (!known) throw InputError("bench: unknown study '" + s + "' (allowed: selectors, theory, dsmc-error, methods, gaps, checkpoint, schedule)");
   }
   bench::StudyOptions so;
   so.repeats = o.repeats, so.quick = o.quick, so.seed = o.seed;
@@ -93,9 +93,9 @@ int run(const BenchOptions& o) {
 }  // namespace
 
 std::function<int()> add_bench_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand("bench", "speed-against-error studies: selectors, theory, dsmc-error, methods, gaps, schedule (all when omitted)");
+  CLI::App* cmd = app.add_subcommand("bench", "speed-against-error studies: selectors, theory, dsmc-error, methods, gaps, checkpoint, schedule (all when omitted)");
   auto o = std::make_shared<BenchOptions>();
-  cmd->add_option("study", o->study, "selectors | theory | dsmc-error | methods | gaps | schedule");
+  cmd->add_option("study", o->study, "selectors | theory | dsmc-error | methods | gaps | checkpoint | schedule");
   cmd->add_option("--units", o->units, "schedule: units.tsv of a validate run (default DIR/units.tsv)");
   cmd->add_option("--out", o->out, "output folder (figures under DIR/bench/<study>/)");
   cmd->add_flag("--json", o->json, "one JSON object per measured case on stdout");

@@ -1,10 +1,12 @@
 // granmix compare SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
 // granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N] (also DIR/index.html)
+// Both also [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS] (checkpoint_options.hpp).
 // (design.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
+#include "checkpoint_options.hpp"
 #include "commands.hpp"
 #include "interrupts.hpp"
 #include "html_report.hpp"
@@ -21,6 +23,8 @@ struct RunOptions {
   std::string out = "out", fidelity = "quick", scenes;
   std::uint64_t seed = 1;
   int threads = 0;
+  CheckpointFlags checkpoint;
+  std::shared_ptr<dsmc::Checkpointing> checkpointing;  // from the flags, once the scenes are known
 };
 
 void add_run_options(CLI::App* cmd, RunOptions& o) {
@@ -28,11 +32,13 @@ void add_run_options(CLI::App* cmd, RunOptions& o) {
   cmd->add_option("--fidelity", o.fidelity, "quick or paper")->check(CLI::IsMember({"quick", "paper"}))->capture_default_str();
   cmd->add_option("--seed", o.seed, "master seed")->capture_default_str();
   cmd->add_option("--threads", o.threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  add_checkpoint_flags(cmd, o.checkpoint);
 }
 
 dsmc::RunOptions run_options(const RunOptions& o) {
   dsmc::RunOptions r;
   r.fidelity = o.fidelity, r.seed = o.seed, r.threads = o.threads;
+  r.checkpoint = o.checkpointing.get();
   return r;
 }
 
@@ -53,9 +59,11 @@ std::function<int()> add_compare_command(CLI::App& app) {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const model::Scene s = model::load_scene(*scene);
-    dsmc::RunOptions run = run_options(*o);
-    const scheduler::GatheredReplicas replicas = scheduler::run_units(dsmc::plan_scene_dsmc(s, run), o->threads);
+    std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, run_options(*o));
+    o->checkpointing = start_checkpointing(o->checkpoint, plan);
+    const scheduler::GatheredReplicas replicas = scheduler::run_units(plan, o->threads);
     if (!scheduler::root()) return 0;  // rank 0 writes every file
+    dsmc::RunOptions run = run_options(*o);
     run.source = &replicas;
     const SceneOutcome r = compare_scene(s, o->out, run);
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
@@ -83,7 +91,6 @@ std::function<int()> add_validate_command(CLI::App& app) {
     std::vector<model::Scene> scenes;
     std::vector<std::string> errors;
     std::vector<dsmc::DsmcSetup> setups;
-    dsmc::RunOptions run = run_options(*o);
     auto report_error = [&](const std::filesystem::path& f, const std::exception& e) {
       errors.push_back(f.filename().string() + ": " + e.what());
       if (scheduler::root()) std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
@@ -91,14 +98,16 @@ std::function<int()> add_validate_command(CLI::App& app) {
     for (const auto& f : files) {
       try {
         model::Scene s = model::load_scene(f.string());
-        for (auto& d : dsmc::plan_scene_dsmc(s, run)) setups.push_back(std::move(d));
+        for (auto& d : dsmc::plan_scene_dsmc(s, run_options(*o))) setups.push_back(std::move(d));
         scenes.push_back(std::move(s));
       } catch (const std::exception& e) {
         report_error(f, e);
       }
     }
+    o->checkpointing = start_checkpointing(o->checkpoint, setups);
     const scheduler::GatheredReplicas replicas = scheduler::run_units(setups, o->threads);
     if (!scheduler::root()) return 0;  // rank 0 writes every file
+    dsmc::RunOptions run = run_options(*o);
     run.source = &replicas;
     std::vector<SceneOutcome> all;
     std::printf("%s", summary_header().c_str());

@@ -1,4 +1,5 @@
 // granmix dsmc SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
+//   [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS]
 //   -> DIR/<scene>/dsmc.tsv with mean and standard-error columns (design.md §3–4), and an
 //   end-of-run summary on stdout; a progress line on stderr (compare/scheduler.hpp).
 #include <sys/resource.h>
@@ -7,6 +8,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "checkpoint_options.hpp"
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
 #include "interrupts.hpp"
@@ -24,6 +26,7 @@ struct DsmcOptions {
   std::string scene, out = "out", fidelity = "quick";
   std::uint64_t seed = 1;
   int threads = 0;
+  CheckpointFlags checkpoint;
 };
 
 int run(const DsmcOptions& o) {
@@ -32,7 +35,10 @@ int run(const DsmcOptions& o) {
   const model::Scene s = model::load_scene(o.scene);
   dsmc::RunOptions opt;
   opt.fidelity = o.fidelity, opt.seed = o.seed, opt.threads = o.threads;
-  const scheduler::GatheredReplicas replicas = scheduler::run_units(dsmc::plan_scene_dsmc(s, opt), o.threads);
+  std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, opt);
+  const auto checkpointing = start_checkpointing(o.checkpoint, plan);
+  opt.checkpoint = checkpointing.get();
+  const scheduler::GatheredReplicas replicas = scheduler::run_units(plan, o.threads);
   if (!scheduler::root()) return 0;  // rank 0 writes every file
   opt.source = &replicas;
   const dsmc::DsmcRun run = dsmc::run_scene_dsmc(s, opt);
@@ -73,6 +79,7 @@ std::function<int()> add_dsmc_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--seed", o->seed, "master seed")->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
+  add_checkpoint_flags(cmd, o->checkpoint);
   return [o]() { return run(*o); };
 }
 

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
@@ -23,6 +24,8 @@ struct State {
   std::filesystem::path staging;
   std::string finished = "nothing";
   std::vector<std::filesystem::path> created;  // output folders this run created, deepest first
+  std::atomic<dsmc::StopRequest*> stop{nullptr};  // checkpointing on: replicas to stop first
+  std::filesystem::path checkpoint_dir;
 };
 
 // Never destroyed: the watcher may need it while the process exits.
@@ -44,12 +47,18 @@ sigset_t interrupt_signals() {
   while (sigwait(&set, &sig) != 0) {
   }
   State& s = state();
+  std::string snapshots;
+  if (dsmc::StopRequest* stop = s.stop.load()) {  // before the lock: a replica's last snapshot may take a while
+    const std::size_t n = stop->request_and_wait();
+    snapshots = "; last snapshots of " + std::to_string(n) + " replicas in flight written to " + s.checkpoint_dir.string() +
+                " (resume with --restart " + s.checkpoint_dir.string() + ")";
+  }
   s.mutex.lock();  // held until _Exit: no output is written or renamed any more
   std::error_code ec;
   if (!s.staging.empty()) std::filesystem::remove_all(s.staging, ec);
   for (const auto& d : s.created) std::filesystem::remove(d, ec);  // only if still empty
-  std::fprintf(stderr, "granmix: interrupted by %s; finished: %s; no partial output left\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
-               s.finished.c_str());
+  std::fprintf(stderr, "granmix: interrupted by %s; finished: %s; no partial output left%s\n", sig == SIGINT ? "SIGINT" : "SIGTERM",
+               s.finished.c_str(), snapshots.c_str());
   std::fflush(stderr);
   std::_Exit(128 + sig);
 }
@@ -102,6 +111,13 @@ void set_finished(const std::string& what) {
   State& s = state();
   std::lock_guard lock(s.mutex);
   s.finished = what;
+}
+
+void set_stop_request(dsmc::StopRequest* stop, const std::filesystem::path& dir) {
+  State& s = state();
+  std::lock_guard lock(s.mutex);
+  s.checkpoint_dir = dir;
+  s.stop = stop;
 }
 
 WriteGuard::WriteGuard() : lock_(state().mutex) {}

@@ -8,6 +8,8 @@
 #include <mutex>
 #include <string>
 
+#include "dsmc/stop_request.hpp"
+
 namespace granmix::compare::interrupts {
 
 // Blocks SIGINT and SIGTERM in the calling thread (and so in every thread it starts later, OpenMP's
@@ -22,6 +24,10 @@ void require_writable_folder(const std::filesystem::path& out);
 void set_staging(const std::filesystem::path& dir);
 // What the run has finished, for the message (e.g. "3 of 33 scenes written to out/").
 void set_finished(const std::string& what);
+
+// With checkpointing on: an interrupt first asks every replica in flight for a last snapshot in
+// `dir` and waits until they have written it (dsmc/stop_request.hpp), then ends the run as above.
+void set_stop_request(dsmc::StopRequest* stop, const std::filesystem::path& dir);
 
 // While alive, an interrupt waits (writes of several files and the final rename are not split).
 class WriteGuard {

@@ -65,6 +65,7 @@ class ByteReader {
     return s;
   }
   bool done() const { return at_ == bytes_.size(); }
+  std::size_t remaining() const { return bytes_.size() - at_; }
   std::size_t position() const { return at_; }
 
  private:

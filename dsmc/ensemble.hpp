@@ -14,6 +14,7 @@
 #include "model/mixture.hpp"
 #include "model/restitution.hpp"
 #include "replica_record.hpp"
+#include "stop_request.hpp"
 
 namespace granmix::dsmc {
 
@@ -27,9 +28,14 @@ class ReplicaSource {
 
 // Snapshots of replicas in flight, written into `dir` every `every_seconds` of wall time, and resumed
 // from there (issue 14: a run killed by a batch queue loses at most one interval).
+// Each replica snapshots at the first refresh point after every_seconds of its own wall time (0: at
+// every refresh point, for tests); wall time decides only when, never what (dsmc/replica_run.cpp).
 struct Checkpointing {
   std::filesystem::path dir;
   double every_seconds = 600.0;
+  std::string granmix_version;      // written into every file; files of another version are refused
+  StopRequest* stop = nullptr;      // a signal's request to snapshot and stop (dsmc/stop_request.hpp)
+  std::function<void(const std::filesystem::path&)> written;  // after each snapshot (tests: stop after the k-th)
 };
 
 enum class Method { automatic, direct, lowrank, bird, timestep, bird_global };

@@ -6,10 +6,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
 #include "collision_rule.hpp"
+#include "loop_state.hpp"
 #include "model/restitution.hpp"
 #include "selectors.hpp"
 
@@ -57,6 +59,26 @@ class EventLoop {
   // Collide until the kinetic energy falls to energy_stop or below (v1 Fig. 3: age the gas until
   // ⟨T⟩ = 2E/(3N) = 1); it lands within one collision's loss, O(1/N) relative, of the target.
   void cool_to(double energy_stop) { advance(std::numeric_limits<double>::infinity(), energy_stop); }
+
+  // Called at every refresh point (every refresh_every accepted collisions, never per trial), where
+  // the selector has just been rebuilt from the particles and no proposal is drawn ahead: the one
+  // place a snapshot restores exactly (dsmc/replica_snapshot.hpp).
+  void at_refresh(std::function<void()> f) { at_refresh_ = std::move(f); }
+  LoopState state() const {
+    LoopState s;
+    s.t = t_, s.ts = ts_, s.t_e1 = t_e1_, s.e1_start = e1_start_;
+    return s;
+  }
+  // Continue from a snapshot taken at a refresh point. The selector was built from the snapshot's
+  // particles (a refresh of a sorted array moves nothing, so it is the selector the run had) and the
+  // energies recomputed from them, as the refresh did; the proposal the run drew right after the
+  // snapshot is drawn now, so the stream is consumed in the same order.
+  void resume(const LoopState& s, const Counters& c) {
+    t_ = s.t, ts_ = s.ts, t_e1_ = s.t_e1, e1_start_ = s.e1_start;
+    c_ = c;
+    since_refresh_ = 0;
+    selector_changed();
+  }
 
   // Start the measurement here: t = 0, displacements and collision counts zero (v1 Fig. 3 dashed).
   void reset_clock() {
@@ -107,11 +129,12 @@ class EventLoop {
       if (moved_a || moved_b) selector_changed();
       if (++since_refresh_ >= refresh_every_) {
         sel_.refresh(p_);
-        selector_changed();
         energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
         e1_ = species_energy(p_, 0);
         since_refresh_ = 0;
         ++c_.refreshes;
+        if (at_refresh_) at_refresh_();  // before the next proposal is drawn (resume() draws it)
+        selector_changed();
       }
     }
   }
@@ -152,6 +175,7 @@ class EventLoop {
   double inverse_rate_;            // 1 / sel_.total_rate(), renewed by selector_changed()
   Proposal next_{};               // the next trial's pair, drawn one trial ahead (has_next_)
   bool has_next_ = false;
+  std::function<void()> at_refresh_;
 };
 
 }  // namespace granmix::dsmc

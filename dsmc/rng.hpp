@@ -9,6 +9,9 @@
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
+#include <cstring>
+#include <string>
+#include <type_traits>
 #include <utility>
 
 namespace granmix::dsmc {
@@ -104,6 +107,21 @@ class Rng {
     const Vec3 q{b, sign + n.y * n.y * a, -n.y};
     const double cp = f * x, cq = f * y;
     return {c * n.x + cp * p.x + cq * q.x, c * n.y + cp * p.y + cq * q.y, c * n.z + cp * p.z + cq * q.z};
+  }
+
+  // The generator's state (its bytes: pcg's text form does not compile with 128-bit words in
+  // GCC 12), for snapshots of a replica in flight; restore() refuses bytes of another size. (The
+  // snapshot's identity and checksum make sure they are this replica's.)
+  std::string state() const {
+    static_assert(std::is_trivially_copyable_v<pcg64>);
+    return std::string(reinterpret_cast<const char*>(&gen_), sizeof gen_);
+  }
+  bool restore(const std::string& bytes) {
+    if (bytes.size() != sizeof gen_) return false;
+    pcg64 g;
+    std::memcpy(static_cast<void*>(&g), bytes.data(), sizeof g);
+    gen_ = g;
+    return true;
   }
 
  private:

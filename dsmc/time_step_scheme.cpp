@@ -21,7 +21,19 @@ void TimeStepScheme::run_until(double t_stop) {
     step(dt);
     t_ = (t_stop - t_ <= dt) ? t_stop : t_ + dt;
     ++steps_;
+    if (after_step_) after_step_();
   }
+}
+
+LoopState TimeStepScheme::state() const {
+  LoopState s;
+  s.t = t_, s.steps = steps_, s.carry = carry_;
+  return s;
+}
+
+void TimeStepScheme::resume(const LoopState& s, const Counters& c) {
+  t_ = s.t, steps_ = s.steps, carry_ = s.carry;
+  c_ = c;
 }
 
 void TimeStepScheme::step(double dt) {

@@ -7,6 +7,7 @@
 // orderings that is N_i ν_ij Δt collisions per step; velocities are frozen within a step, which is
 // the scheme's O(Δt) error (physics.md §7: it biases the cumulants).
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 #include "event_loop.hpp"
@@ -21,6 +22,11 @@ class TimeStepScheme {
   void run_until(double t_stop);
   double time() const { return t_; }
   std::uint64_t steps() const { return steps_; }
+  // Called after every step: a step boundary is where a snapshot restores exactly (the next step's
+  // Δt and majorants are functions of the particles).
+  void after_step(std::function<void()> f) { after_step_ = std::move(f); }
+  LoopState state() const;
+  void resume(const LoopState& s, const Counters& c);
 
  private:
   void step(double dt);
@@ -32,6 +38,7 @@ class TimeStepScheme {
   double factor_, t_ = 0.0;
   std::uint64_t steps_ = 0;
   std::vector<double> carry_;  // fractional candidate counts per ordered pair
+  std::function<void()> after_step_;
 };
 
 }  // namespace granmix::dsmc

@@ -11,7 +11,7 @@ cd "$(dirname "$0")/.."
 build=$1 seconds=$2
 shift 2
 harnesses=("$@")
-[ ${#harnesses[@]} -gt 0 ] || harnesses=(scene hcs_args tsv_roundtrip)
+[ ${#harnesses[@]} -gt 0 ] || harnesses=(scene hcs_args tsv_roundtrip checkpoint)
 findings="$build/fuzz-findings"
 mkdir -p "$findings"
 status=0
