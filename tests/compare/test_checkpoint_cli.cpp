@@ -206,3 +206,54 @@ TEST_CASE("SIGTERM with checkpointing: every replica in flight writes a last sna
     CHECK(dsmc::read_identity(bytes, f.string(), dsmc::SnapshotKind::in_flight).unit_key.rfind("interrupt-long-dsmc.quick.seed1.", 0) == 0);
   }
 }
+
+#ifdef GRANMIX_MPIEXEC
+TEST_CASE("under MPI: validate on 2 ranks killed after its first snapshot, restarted on 3 ranks, writes the same tables", "[compare]") {
+  const auto base = test::fresh_dir("ckpt-mpi");
+  const auto ref = base / "ref", out = base / "out", ckpt = base / "ckpt";
+  REQUIRE(test::run_granmix("validate --scenes " + scenes + " --threads 2 --out " + ref.string()).code == 0);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);  // containers run as root; Open MPI asks for both
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  // mpirun in a process group of its own, so that SIGKILL reaches every rank at once (a killed node).
+  std::vector<std::string> args = {GRANMIX_MPIEXEC, "--oversubscribe", "-n", "2", GRANMIX_EXE, "validate", "--scenes", scenes,
+                                   "--threads", "1", "--out", out.string(), "--checkpoint", ckpt.string(), "--checkpoint-every", "0"};
+  std::vector<char*> argv;
+  for (auto& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_addopen(&fa, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  pid_t pid = 0;
+  REQUIRE(posix_spawn(&pid, GRANMIX_MPIEXEC, &fa, &attr, argv.data(), environ) == 0);
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  bool killed = false;
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline && waitpid(pid, &status, WNOHANG) == 0) {
+    if (!files_with(ckpt, ".snap").empty()) {
+      killed = kill(-pid, SIGKILL) == 0;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  if (killed) waitpid(pid, &status, 0);
+  REQUIRE(killed);
+  const std::string restart = std::string(GRANMIX_MPIEXEC) + " --oversubscribe -n 3 " + GRANMIX_EXE + " validate --scenes " + scenes +
+                              " --threads 1 --out " + out.string() + " --restart " + ckpt.string() + " > /dev/null 2>&1";
+  REQUIRE(std::system(restart.c_str()) == 0);
+  std::size_t compared = 0;
+  for (const char* scene : {"ckpt-cooling", "ckpt-sweep"})
+    for (const auto& f : files_with(ref / scene, ".tsv")) {
+      INFO(f);
+      CHECK(without_command(read(f)) == without_command(read(out / scene / f.filename())));
+      ++compared;
+    }
+  CHECK(compared >= 4);
+}
+#endif
