@@ -71,7 +71,7 @@ nlohmann::json without_timings(nlohmann::json j) {
 }
 }  // namespace
 
-TEST_CASE("mpirun -n 3 granmix validate: every TSV and report identical to one process - work spread over the ranks",
+TEST_CASE("mpirun -n 3 granmix validate and compare: every TSV and report identical to one process - work spread over the ranks",
           "[compare][dsmc]") {
   const auto d = test::fresh_dir("mpi-validate");
   std::filesystem::create_directories(d / "scenes");
@@ -92,6 +92,12 @@ TEST_CASE("mpirun -n 3 granmix validate: every TSV and report identical to one p
     const auto b = nlohmann::json::parse(std::ifstream(d / "mpi" / scene / "report.json"));
     CHECK(without_timings(a) == without_timings(b));
   }
+  // granmix compare of one scene under MPI: the same tables as the serial validation wrote.
+  const auto one = run_mpi(3, "compare " + (d / "scenes" / "bo1-fig05.toml").string() + " --out " + (d / "mpi-compare").string());
+  INFO(one.output);
+  CHECK(one.code == 0);
+  for (const char* f : {"dsmc.tsv", "deviations.tsv"})
+    CHECK(test::data_lines(d / "serial" / "bo1-fig05" / f) == test::data_lines(d / "mpi-compare" / "bo1-fig05" / f));
   const auto summary = nlohmann::json::parse(std::ifstream(d / "mpi" / "summary.json"));
   CHECK(summary["ranks"] == 3);
   CHECK(summary["dsmc_units"] == 32);
