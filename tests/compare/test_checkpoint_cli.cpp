@@ -51,6 +51,19 @@ std::vector<std::filesystem::path> files_with(const std::filesystem::path& dir, 
   return v;
 }
 
+// Compares every table of the two checkpoint test scenes in `ref` with `out` (command and date lines
+// aside); returns how many were compared.
+std::size_t same_tables(const std::filesystem::path& ref, const std::filesystem::path& out) {
+  std::size_t compared = 0;
+  for (const char* scene : {"ckpt-cooling", "ckpt-sweep"})
+    for (const auto& f : files_with(ref / scene, ".tsv")) {
+      INFO(f);
+      CHECK(without_command(read(f)) == without_command(read(out / scene / f.filename())));
+      ++compared;
+    }
+  return compared;
+}
+
 pid_t spawn_granmix(std::vector<std::string> args, const std::filesystem::path& err) {
   args.insert(args.begin(), GRANMIX_EXE);
   std::vector<char*> argv;
@@ -115,14 +128,7 @@ TEST_CASE("granmix validate killed after its first snapshot and restarted writes
   const auto r = test::run_granmix("validate --scenes " + scenes + " --threads 2 --out " + out.string() + " --restart " + ckpt.string());
   INFO(r.output);
   REQUIRE(r.code == 0);
-  std::size_t compared = 0;
-  for (const char* scene : {"ckpt-cooling", "ckpt-sweep"})
-    for (const auto& f : files_with(ref / scene, ".tsv")) {
-      INFO(f);
-      CHECK(without_command(read(f)) == without_command(read(out / scene / f.filename())));
-      ++compared;
-    }
-  CHECK(compared >= 4);  // theory and dsmc tables of both scenes
+  CHECK(same_tables(ref, out) >= 4);  // theory and dsmc tables of both scenes
   // Run again on the finished folder: every replica is read from its .done file, none recomputed.
   const auto again = test::run_granmix("validate --scenes " + scenes + " --threads 2 --out " + out.string() + " --restart " + ckpt.string());
   CHECK(again.code == 0);
@@ -247,13 +253,6 @@ TEST_CASE("under MPI: validate on 2 ranks killed after its first snapshot, resta
   const std::string restart = std::string(GRANMIX_MPIEXEC) + " --oversubscribe -n 3 " + GRANMIX_EXE + " validate --scenes " + scenes +
                               " --threads 1 --out " + out.string() + " --restart " + ckpt.string() + " > /dev/null 2>&1";
   REQUIRE(std::system(restart.c_str()) == 0);
-  std::size_t compared = 0;
-  for (const char* scene : {"ckpt-cooling", "ckpt-sweep"})
-    for (const auto& f : files_with(ref / scene, ".tsv")) {
-      INFO(f);
-      CHECK(without_command(read(f)) == without_command(read(out / scene / f.filename())));
-      ++compared;
-    }
-  CHECK(compared >= 4);
+  CHECK(same_tables(ref, out) >= 4);
 }
 #endif
