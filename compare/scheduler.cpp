@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <ctime>
 #include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
@@ -98,13 +99,19 @@ std::vector<Unit> units_of(const std::vector<dsmc::DsmcSetup>& setups) {
   return u;
 }
 
-double cpu_seconds(const dsmc::ReplicaRecord& r) { return r.seconds_setup + r.seconds_loop + r.seconds_sample; }
+// CPU time of the calling thread: a unit's cost that does not grow when the machine is shared.
+double thread_cpu_seconds() {
+  timespec ts{};
+  if (clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts) != 0) throw std::runtime_error("clock_gettime(CLOCK_THREAD_CPUTIME_ID) failed");
+  return double(ts.tv_sec) + 1e-9 * double(ts.tv_nsec);
+}
 
 #ifdef GRANMIX_MPI
 // A finished unit as it travels: its index in the unit list, then the record (or an error text).
-std::string pack(std::size_t index, const dsmc::ReplicaRecord& r) {
+std::string pack(std::size_t index, double cpu, const dsmc::ReplicaRecord& r) {
   dsmc::ByteWriter w;
   w.put<std::uint64_t>(index);
+  w.put(cpu);
   dsmc::write_record(w, r);
   return w.take();
 }
@@ -156,13 +163,16 @@ struct Done {
   std::size_t index;
   dsmc::ReplicaRecord record;
   std::string error;  // empty: success
+  double cpu = 0.0;   // CPU seconds of the thread that ran it
 };
 
 // Runs one unit, catching its error as text (a thread must not throw).
 Done run_unit(const std::vector<dsmc::DsmcSetup>& setups, const std::vector<Unit>& units, std::size_t i) {
-  Done d{i, {}, {}};
+  Done d{i, {}, {}, 0.0};
   try {
+    const double start = thread_cpu_seconds();
     d.record = dsmc::run_one_replica(setups[units[i].setup], units[i].replica);
+    d.cpu = thread_cpu_seconds() - start;
   } catch (const std::exception& e) {
     d.error = e.what();
   }
@@ -257,7 +267,7 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
       }
       if (auto d = finished.try_pop()) {
         --in_flight;
-        const std::string msg = d->error.empty() ? pack(d->index, d->record) : std::to_string(d->index) + "\n" + d->error;
+        const std::string msg = d->error.empty() ? pack(d->index, d->cpu, d->record) : std::to_string(d->index) + "\n" + d->error;
         check(MPI_Send(msg.data(), static_cast<int>(msg.size()), MPI_BYTE, 0, d->error.empty() ? result : failure, MPI_COMM_WORLD),
               "MPI_Send (result)");
         check(MPI_Send(&one, 1, MPI_INT, 0, request, MPI_COMM_WORLD), "MPI_Send (request)");
@@ -280,6 +290,7 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
   std::vector<std::string> errors;
   std::vector<std::optional<dsmc::ReplicaRecord>> records(units.size());
   std::vector<int> where(units.size(), 0);
+  std::vector<double> cpu(units.size(), 0.0);
   auto take = [&]() -> std::optional<std::size_t> {
     std::lock_guard<std::mutex> l(m);
     if (next >= units.size() || !errors.empty()) return std::nullopt;  // after a failure nothing new starts
@@ -295,7 +306,7 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
       return;
     }
     collisions += double(d.record.accepted);
-    where[d.index] = from;
+    where[d.index] = from, cpu[d.index] = d.cpu;
     records[d.index] = std::move(d.record);
   };
   std::vector<std::thread> pool;
@@ -332,10 +343,11 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
         } else if (st.MPI_TAG == result) {
           dsmc::ByteReader in(msg);
           const auto i = static_cast<std::size_t>(in.get<std::uint64_t>());
-          store(Done{i, dsmc::read_record(in), {}}, st.MPI_SOURCE);
+          const double cpu = in.get<double>();
+          store(Done{i, dsmc::read_record(in), {}, cpu}, st.MPI_SOURCE);
         } else if (st.MPI_TAG == failure) {
           const std::size_t cut = msg.find('\n');
-          store(Done{std::stoul(msg.substr(0, cut)), {}, msg.substr(cut + 1)}, st.MPI_SOURCE);
+          store(Done{std::stoul(msg.substr(0, cut)), {}, msg.substr(cut + 1), 0.0}, st.MPI_SOURCE);
         } else if (st.MPI_TAG == bye) {
           ++byes;
         }
@@ -350,8 +362,8 @@ GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threa
   for (std::size_t i = 0; i < units.size(); ++i) {
     const dsmc::DsmcSetup& s = setups[units[i].setup];
     const dsmc::ReplicaRecord& r = *records[i];
-    out.units.push_back({s.unit_key, units[i].replica, units[i].cost, double(r.accepted), cpu_seconds(r), where[i]});
-    out.cpu_seconds += cpu_seconds(r);
+    out.units.push_back({s.unit_key, units[i].replica, units[i].cost, double(r.accepted), cpu[i], where[i]});
+    out.cpu_seconds += cpu[i];
     out.records.emplace(std::make_pair(s.unit_key, units[i].replica), std::move(*records[i]));
   }
   out.wall_seconds = elapsed();

@@ -30,7 +30,8 @@ inline bool root() { return rank() == 0; }
 // --threads 0 under MPI: this node's cores shared among its ranks (OMPI_COMM_WORLD_LOCAL_SIZE).
 int threads_per_rank(int requested);
 
-// One finished unit: what it was estimated to cost and what it cost.
+// One finished unit: what it was estimated to cost and what it cost (collisions; CPU seconds of the
+// thread that ran it, which do not grow when the machine is shared).
 struct UnitCost {
   std::string key;
   std::size_t replica = 0;
@@ -44,7 +45,7 @@ class GatheredReplicas : public dsmc::ReplicaSource {
   const dsmc::ReplicaRecord* find(const std::string& unit_key, std::size_t replica) const override;
   std::map<std::pair<std::string, std::size_t>, dsmc::ReplicaRecord> records;
   std::vector<UnitCost> units;  // in the order they were handed out (longest estimate first)
-  double cpu_seconds = 0.0;     // summed over units (set-up, event loop, sampling)
+  double cpu_seconds = 0.0;     // CPU seconds summed over units
   double wall_seconds = 0.0;
   int ranks = 1, threads = 1;   // threads per rank
 };
