@@ -96,7 +96,6 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
   const auto t0 = std::chrono::steady_clock::now();
   const int threads = s.threads > 0 ? s.threads : omp_get_max_threads();
   std::exception_ptr failure;
-  std::size_t done = 0;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
   for (std::size_t r = 0; r < s.replicas; ++r) {
     try {
@@ -106,8 +105,6 @@ DsmcResult run_ensemble(const DsmcSetup& s) {
 #pragma omp critical
       failure = std::current_exception();
     }
-#pragma omp critical
-    if (s.progress) s.progress(++done, s.replicas);
   }
   if (failure) std::rethrow_exception(failure);
 

@@ -81,7 +81,6 @@ struct DsmcSetup {
   std::string unit_key, scene_sha256;
   const ReplicaSource* source = nullptr;          // none: every replica computed here
   const Checkpointing* checkpoint = nullptr;      // none: no snapshots
-  std::function<void(std::size_t done, std::size_t total)> progress;  // called as replicas finish
 };
 
 // Mean and standard error over independent replicas of a vector of observables, and each

@@ -207,7 +207,6 @@ DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
   d.seed = opt.seed;
   d.replicas = f.replicas;
   d.threads = opt.threads;
-  d.progress = opt.progress;
   d.scene_sha256 = model::sha256_hex(s.text);
   // Scene, fidelity and seed name the run: a sweep point's seed is its own (point_seed).
   d.unit_key = s.name + "." + fidelity + ".seed" + std::to_string(opt.seed) + "." + d.scene_sha256.substr(0, 12);

@@ -21,13 +21,12 @@ struct DsmcRun {
 };
 
 // How a scene's DSMC runs: fidelity "quick" or "paper" (particles, replicas of the scene's [dsmc]),
-// master seed, threads, progress(done, total) as replicas finish; replicas already computed by other
+// master seed, threads; replicas already computed by other
 // MPI ranks (source) and checkpointing (issue 14), both optional.
 struct RunOptions {
   std::string fidelity = "quick";
   std::uint64_t seed = 1;
   int threads = 0;
-  std::function<void(std::size_t, std::size_t)> progress;
   const ReplicaSource* source = nullptr;
   const Checkpointing* checkpoint = nullptr;
 };
