@@ -155,7 +155,8 @@ TEST_CASE("speed classes: after 2e5 collisions every particle is within its clas
   const PairTable pairs(mix, {}, 4800 / 0.16);
   LowRankSelector sel(pairs, p, 8);
   Counters c;
-  EventLoop<LowRankSelector> loop(p, sel, model::Restitution::constant(3, 0.8), rng, c, 1000000000);  // no refresh: moves only
+  const model::Restitution law = model::Restitution::constant(3, 0.8);  // the loop keeps a reference
+  EventLoop<LowRankSelector> loop(p, sel, law, rng, c, 1000000000);  // no refresh: moves only
   while (c.accepted < 200000) loop.run_until(loop.time() + 1.0);
   const SpeedClasses& cls = sel.classes();
   std::size_t violations = 0;
@@ -166,6 +167,27 @@ TEST_CASE("speed classes: after 2e5 collisions every particle is within its clas
       for (std::size_t a = cls.begin(u); a < cls.begin(u) + cls.count(u); ++a) violations += std::sqrt(norm2(p.v[a])) > cls.bound(u);
   }
   CHECK(violations == 0);  // the majorant bound(class a) + bound(class b) >= |g| holds for every pair
+}
+
+TEST_CASE("energy balance at every refresh: mass ratio 1e4 stays within rounding - an unbooked energy change stops the run", "[dsmc]") {
+  const model::Mixture mix({{1, 1, 0.1}, {1e4, 20, 0.001}});
+  Rng rng(7, 0);
+  Particles p = maxwellian_particles(mix, {4000, 400}, {1, 1}, true, true, rng);
+  const PairTable pairs(mix, {}, 4400 / 0.101);
+  LowRankSelector sel(pairs, p, 3);
+  Counters c;
+  const model::Restitution law = model::Restitution::constant(2, 0.8);  // the loop keeps a reference
+  EventLoop<LowRankSelector> loop(p, sel, law, rng, c, p.size());
+  while (c.refreshes < 40) REQUIRE_NOTHROW(loop.run_until(loop.time() + 0.5));  // 40 refreshes within 4 (N + n) eps_mach E
+  // One particle slowed by 0.1% without a collision to book it (what a rule breaking v1 Eq. 3 does):
+  // the next refresh finds the energy balance broken, whatever the sign of the error.
+  bool once = true;
+  loop.at_refresh([&] {
+    if (once) p.v[0] = {0.999 * p.v[0].x, 0.999 * p.v[0].y, 0.999 * p.v[0].z}, once = false;
+  });
+  const std::uint64_t before = c.refreshes;
+  CHECK_THROWS_WITH(([&] { while (c.refreshes < before + 3) loop.run_until(loop.time() + 0.5); }()),
+                    Catch::Contains("energy balance broken"));
 }
 
 TEST_CASE("selectors agree: 5 species - eps = 0.7 - temperatures and collisions per pair", "[dsmc]") {
