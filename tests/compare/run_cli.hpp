@@ -8,6 +8,8 @@
 #include <fstream>
 #include <string>
 
+#include "fresh_dir.hpp"
+
 namespace granmix::test {
 
 struct CliResult {
@@ -25,14 +27,6 @@ inline CliResult run_granmix(const std::string& args) {
   const int status = pclose(p);
   r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
-}
-
-// A fresh, empty folder under the system's temporary directory.
-inline std::filesystem::path fresh_dir(const std::string& name) {
-  const auto d = std::filesystem::temp_directory_path() / ("granmix-test-" + name);
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
 }
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }

@@ -11,6 +11,7 @@
 #include "dsmc/checkpoint_files.hpp"
 #include "dsmc/replica_run.hpp"
 #include "dsmc_fixtures.hpp"
+#include "fresh_dir.hpp"
 #include "model/errors.hpp"
 
 using namespace granmix;
@@ -18,13 +19,6 @@ using namespace granmix;
 namespace {
 
 struct Killed {};  // thrown by the test hook: the replica dies as under SIGKILL, its last snapshot on disk
-
-std::filesystem::path fresh_dir(const std::string& name) {
-  const auto d = std::filesystem::temp_directory_path() / ("granmix-test-ckpt-" + name);
-  std::filesystem::remove_all(d);
-  std::filesystem::create_directories(d);
-  return d;
-}
 
 // Every field of the records but the wall-clock timings, bit for bit.
 void require_identical(const dsmc::ReplicaRecord& a, const dsmc::ReplicaRecord& b) {
@@ -81,7 +75,7 @@ TEST_CASE("restart from any snapshot is bit-identical to the uninterrupted repli
     const dsmc::ReplicaRecord ref = dsmc::run_one_replica(plain, 0);
 
     // Checkpointing at every refresh point changes nothing, and counts the snapshots of a full run.
-    const auto dir = fresh_dir(k.name);
+    const auto dir = test::fresh_dir(std::string("ckpt-") + k.name);
     dsmc::Checkpointing ck;
     ck.dir = dir, ck.every_seconds = 0.0, ck.granmix_version = "test";
     std::size_t written = 0;
@@ -115,7 +109,7 @@ TEST_CASE("restart from any snapshot is bit-identical to the uninterrupted repli
 
 TEST_CASE("damaged and foreign checkpoint files are refused naming the file and the reason", "[dsmc]") {
   dsmc::DsmcSetup s = binary(dsmc::Method::direct);
-  const auto dir = fresh_dir("refusals");
+  const auto dir = test::fresh_dir("ckpt-refusals");
   dsmc::Checkpointing ck;
   ck.dir = dir, ck.every_seconds = 0.0, ck.granmix_version = "test";
   ck.written = [](const std::filesystem::path&) { throw Killed{}; };

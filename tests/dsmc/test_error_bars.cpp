@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "dsmc/scene_dsmc.hpp"
+#include "fresh_dir.hpp"
 #include "model/scene.hpp"
 
 using namespace granmix;
@@ -20,7 +21,7 @@ namespace {
 // A small ternary that cools slowly while its species trade energy (ε = 0.95), with every observable the
 // check needs: T, ⟨T⟩ (species 0), MSD, ⟨R_3²⟩/⟨R_1²⟩ and γ = T_1/T_2.
 model::Scene calibration_scene() {
-  const std::filesystem::path f = std::filesystem::temp_directory_path() / "granmix-error-bars.toml";
+  const std::filesystem::path f = test::fresh_dir("error-bars") / "error-bars.toml";
   std::ofstream(f) << R"([scene]
 name = "error-bars"
 [mixture]
