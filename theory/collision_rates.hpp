@@ -23,9 +23,10 @@ enum class MomentMethod { automatic, series, quadrature };
 
 class CollisionRates {
  public:
-  // Largest pair table the constructor accepts (1 GB: N(N+1)/2 × 48 bytes, about 6400 species);
-  // above, std::invalid_argument.
-  static constexpr double max_pair_table_bytes = 1e9;
+  // Largest pair data the constructor accepts (1 GB): the contact values χ_ki (N² × 8 bytes) and,
+  // for a per-pair or viscoelastic law, the moments (N(N+1)/2 × 16 bytes); about 11 000 species with
+  // one ε for all pairs. Above, std::invalid_argument (the O(N²) right-hand sides would run for hours).
+  static constexpr double max_pair_data_bytes = 1e9;
 
   CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
                  MomentMethod method = MomentMethod::automatic);
@@ -52,42 +53,41 @@ class CollisionRates {
   double diffusion(std::size_t k, const double* T) const;
 
  private:
-  // The constants of every unordered pair k <= i in both directions, in a packed upper triangle
-  // (row k holds i = k … N−1 contiguously), one array per constant so that the symmetric sums
-  // stream through them and vectorise.
-  struct Links {
-    std::vector<double> pref_ki, pref_ik;  // (4/3)√(2π) n_i σ_ki² χ_ki and (4/3)√(2π) n_k σ_ki² χ_ik
-    std::vector<double> mu_ki, mu_ik;      // m_i/(m_i+m_k) and m_k/(m_i+m_k)
-    std::vector<double> W2, D;             // constant law: the pair's moments, computed once (ε_ki = ε_ik)
+  // No table of pair constants: every pair's are computed from per-species arrays and the row of χ
+  // where they are used (a table of 48 bytes per pair streamed 600 MB per right-hand side at 5000
+  // species and made the pass memory-bound). Only a law with more than one ε (constant per pair,
+  // or viscoelastic at the current V) keeps the pair moments, in a packed upper triangle (row k
+  // holds i = k … N−1).
+  //
+  // The sums are taken in a factored form: with a_ki = σ_ki² χ_ki √V μ_ki and
+  // p_ki = σ_ki² χ_ki √V μ_ki μ_ik (T_i − T_k), and c = (4/3)√(2π),
+  //   ξ_k = c (D S_k − W2 U_k / T_k),  τ_v,k⁻¹ = c W2 (S_k + U_k / T_k) / 2,
+  //   S_k = Σ_i n_i a_ki,  U_k = Σ_i n_i p_ki
+  // (per-pair moments move inside the sums: S_D = Σ n_i a D, S_W = Σ n_i a W2, U_W = Σ n_i p W2).
+  // p_ik = −p_ki to the last bit, so one evaluation serves both rows; U_k is exactly 0 when all
+  // T_i = T_k, and so is ξ at ε = 1 (CVODE needs that at t ~ 1e12).
+  struct RowSums {
+    double S_D = 0.0, S_W = 0.0, U_W = 0.0;  // uniform moments: S_D = S_W = S, U_W = U
   };
-  static constexpr std::size_t link_bytes = 6 * sizeof(double);
-  std::size_t link_index(std::size_t k, std::size_t i) const { return k * (2 * mix_.size() - k + 1) / 2 + (i - k); }
-  // One direction k → i of a link: what the formulas need.
-  struct Pair {
-    double prefactor, mu, mu_k;  // (4/3)√(2π) n_i σ_ki² χ_ki, m_i/(m_i+m_k), m_k/(m_i+m_k)
-    double inv_mk, inv_mi;
-  };
-  Pair pair(std::size_t k, std::size_t i) const;
-  // ξ_ki and τ_v,ki⁻¹ from their parts (the formulas at the top of this file); shared by the single
-  // pair functions and the sums over all pairs, so that both give the same numbers.
-  static double xi_formula(double pref, double mu, double mu_k, double sqrtV, double Tk, double Ti, const CollisionMoments& W) {
-    return pref * sqrtV * mu * (W.D - mu_k * (Ti - Tk) / Tk * W.W2);
-  }
-  static double inv_tau_formula(double pref, double mu, double mu_k, double sqrtV, double Tk, double Ti,
-                                const CollisionMoments& W) {
-    return pref * (sqrtV * mu) * (1.0 + mu_k * (Ti - Tk) / Tk) * W.W2 * 0.5;
-  }
-  // Σ_i over all pairs for every k, each unordered pair once with √V (and a viscoelastic pair's
-  // moments) shared, the sum for each k in the order i = 0 … N−1 (as the single-species sums, same
-  // numbers); xi or inv_tau may be null.
+  // The sums of the one pair (k, i), and of row k over all partners at temperatures T in the order
+  // i = 0 … N−1 (the pass over all pairs gives the same numbers).
+  RowSums pair_sums(std::size_t k, std::size_t i, double Tk, double Ti) const;
+  RowSums row_sums(std::size_t k, const double* T) const;
+  void finish(const RowSums& r, double Tk, double* xi, double* inv_tau) const;
+  // Every k at once over the unordered pairs, the sum for each k in the order i = 0 … N−1 (as
+  // row_sums); xi or inv_tau may be null.
   void symmetric_sums(const double* T, double* xi, double* inv_tau) const;
 
   model::Mixture mix_;
   model::Restitution law_;
   std::vector<std::vector<double>> chi_;
   MomentMethod method_;
-  std::vector<double> inv_m_;
-  Links links_;
+  std::vector<double> inv_m_, density_, diameter_;
+  std::vector<const double*> chi_rows_;  // row k of χ for the pass (chi_uniform_row_ when all χ_ki are equal)
+  std::vector<double> chi_uniform_row_;
+  bool uniform_moments_ = false;           // constant law with one ε: W_ holds its moments
+  CollisionMoments W_{};
+  std::vector<double> W2_, D_;             // constant law with per-pair ε: each link's moments
 };
 
 }  // namespace granmix::theory

@@ -34,6 +34,7 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   if (opt_.reduced_time) tau_at_ = n_, n_ += N_;
   if (opt_.diffusion_integral) int_at_ = n_, n_ += N_;
   if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += 2 * N_;
+  kept_ = opt_.vacf ? j_at_ : n_;  // J = ⟨Δr·v⟩ is last and never read back: not kept
   work_T_.resize(N_);
   work_a_.resize(N_);
   work_xi_.resize(N_);
@@ -95,13 +96,13 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
       int q = 0;
       model::check_cvode(CVodeGetLastOrder(cv.mem(), &q), "CVodeGetLastOrder");
       // One block per step (a single growing array was copied on every reallocation: 10% of the
-      // time at 500 species with the VACF MSD).
-      Step st{s, q, std::vector<double>(std::size_t(q + 1) * n_)};
+      // time at 500 species with the VACF MSD), of the kept components only.
+      Step st{s, q, std::vector<double>(std::size_t(q + 1) * kept_)};
       double factorial = 1.0;
       for (int j = 0; j <= q; ++j) {
         model::check_cvode(CVodeGetDky(cv.mem(), s, j, dky_v), "CVodeGetDky");
         if (j > 0) factorial *= j;
-        for (std::size_t c = 0; c < n_; ++c) st.taylor[j * n_ + c] = dky[c] / factorial;
+        for (std::size_t c = 0; c < kept_; ++c) st.taylor[j * kept_ + c] = dky[c] / factorial;
       }
       steps_.push_back(std::move(st));
     }
@@ -177,7 +178,7 @@ double TemperatureHistory::component(double t, std::size_t c) const {
   if (it == steps_.end()) --it;
   const double x = s - it->s_end;  // <= 0, within the step
   double v = 0.0;
-  for (int j = it->order; j >= 0; --j) v = v * x + it->taylor[j * n_ + c];
+  for (int j = it->order; j >= 0; --j) v = v * x + it->taylor[j * kept_ + c];
   return v;
 }
 

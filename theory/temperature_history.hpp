@@ -80,7 +80,7 @@ class TemperatureHistory {
   struct Step {
     double s_end;
     int order;
-    std::vector<double> taylor;  // (order+1) blocks of n_ values, y^(j)(s_end)/j!
+    std::vector<double> taylor;  // (order+1) blocks of kept_ values, y^(j)(s_end)/j!
   };
   double component(double t, std::size_t index) const;
   static int rhs(double s, N_Vector y, N_Vector dy, void* self);
@@ -91,7 +91,7 @@ class TemperatureHistory {
   double t_end_, t_c_;
   bool log_clock_ = true;
   TemperatureOptions opt_;
-  std::size_t N_, n_;
+  std::size_t N_, n_, kept_ = 0;  // unknowns; the first kept_ of them are kept per step
   std::shared_ptr<const CoolingModel> cooling_;
   std::shared_ptr<const VelocityDecay> decay_;
   std::size_t z_at_ = 0, nz_ = 0, tau_at_ = 0, int_at_ = 0, r2_at_ = 0, j_at_ = 0;

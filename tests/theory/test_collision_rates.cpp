@@ -10,6 +10,7 @@
 #include "model/enskog.hpp"
 #include "theory/collision_rates.hpp"
 #include "theory/diffusion.hpp"
+#include "theory_fixtures.hpp"
 
 using namespace granmix;
 using namespace granmix::theory;
@@ -17,16 +18,6 @@ using std::numbers::pi;
 
 namespace {
 
-// v1 Eqs. (A1), (A2) exactly as printed (g2 = χ).
-double A2(double ni, double s, double chi, double Tk, double Ti, double mk, double mi, double e) {
-  const double V = (Tk * mi + Ti * mk) / (mi * mk);
-  return 8.0 / 3.0 * std::sqrt(2 * pi) * ni * s * s * chi * std::sqrt(V) * (1 + e) * (mi / (mi + mk)) *
-         (1 - 0.5 * (1 + e) * (Ti * mk + Tk * mi) / (Tk * (mi + mk)));
-}
-double A1(double ni, double s, double chi, double Tk, double Ti, double mk, double mi, double e) {
-  return 8 * std::sqrt(2 * pi) / 3 * ni * s * s * chi * (mi / (mi + mk)) * (Tk * mi + Ti * mk) / (Tk * (mi + mk)) *
-         std::sqrt((Tk * mi + Ti * mk) / (mi * mk)) * (1 + e) * (1 + e) / 4;
-}
 // v1 Eqs. (A3), (A4) with B_n as printed: (Aκ)^(n/2) (2V)^(n/20) ((20+n)n/800) Γ(n/20).
 double h(int n) { return n >= 1 && n <= 9 ? model::viscoelastic_h[n - 1] : 0.0; }
 double An(int n) {
@@ -68,8 +59,8 @@ TEST_CASE("constant eps: rates equal v1 (A1) - (A2) as printed - any temperature
       for (int i = 0; i < 2; ++i) {
         // Same formula rearranged: rounding only (1e-13 relative).
         const double n_i = mix[i].density, s = mix.sigma(k, i), mk = mix[k].mass, mi = mix[i].mass;
-        CHECK(r.xi(k, i, T[k], T[i]) == Approx(A2(n_i, s, chi[k][i], T[k], T[i], mk, mi, e)).epsilon(1e-13).margin(1e-300));
-        CHECK(r.inv_tau_v(k, i, T[k], T[i]) == Approx(A1(n_i, s, chi[k][i], T[k], T[i], mk, mi, e)).epsilon(1e-13));
+        CHECK(r.xi(k, i, T[k], T[i]) == Approx(test::printed_A2(n_i, s, chi[k][i], T[k], T[i], mk, mi, e)).epsilon(1e-13).margin(1e-300));
+        CHECK(r.inv_tau_v(k, i, T[k], T[i]) == Approx(test::printed_A1(n_i, s, chi[k][i], T[k], T[i], mk, mi, e)).epsilon(1e-13));
       }
   }
 }
@@ -132,4 +123,71 @@ TEST_CASE("viscoelastic: series and exact-quadrature rates agree where the serie
   }
   std::printf("series vs exact ε: the energy-loss moment ⟨1−ε²⟩ differs by 1%% at a = %.3f\n", part);
   CHECK(part > 0.1);
+}
+
+TEST_CASE("50 species: the pass over pairs equals the printed (A1) - (A2) summed per species", "[theory]") {
+  // The all-pairs pass computes the rates in a factored form from per-species arrays (no pair
+  // table); here against a literal per-species sum of the printed formulas, for the three
+  // branches of the pass: one ε and χ = 1, Enskog χ (a row of χ per species), per-pair ε.
+  // Bound: rounding only (≈ 50 terms of ≤ 1e-15 each, and at most 1e-13 of cancellation in ξ
+  // relative to its largest term, which is why ξ is compared against the sum of |terms|).
+  const std::size_t N = 50;
+  const model::Mixture mix = test::power_law(N);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0, 1);
+  std::vector<std::vector<double>> eps(N, std::vector<double>(N));
+  for (std::size_t k = 0; k < N; ++k)
+    for (std::size_t i = k; i < N; ++i) eps[k][i] = eps[i][k] = 0.3 + 0.7 * u(rng);
+  std::vector<double> T(N);
+  for (double& t : T) t = std::exp(4 * u(rng) - 2);
+  struct Case {
+    const char* name;
+    model::Restitution law;
+    std::vector<std::vector<double>> chi;
+  };
+  const std::vector<Case> cases = {{"one eps, chi = 1", model::Restitution::constant(N, 0.6), model::dilute_contact_values(N)},
+                                   {"one eps, Enskog chi", model::Restitution::constant(N, 0.6),
+                                    model::enskog_contact_values(model::with_reduced_density(mix, 0.2))},
+                                   {"per-pair eps", model::Restitution::constant_matrix(eps), model::dilute_contact_values(N)}};
+  for (const Case& c : cases) {
+    INFO(c.name);
+    const CollisionRates r(mix, c.law, c.chi);
+    std::vector<double> xi(N), tau(N), xi_only(N), tau_only(N);
+    r.xi_and_inv_tau_v_all(T.data(), xi.data(), tau.data());
+    r.xi_all(T.data(), xi_only.data());
+    r.inv_tau_v_all(T.data(), tau_only.data());
+    for (std::size_t k = 0; k < N; ++k) {
+      double xi_ref = 0, xi_abs = 0, tau_ref = 0;
+      for (std::size_t i = 0; i < N; ++i) {
+        const double e = c.law.eps(k, i), s = mix.sigma(k, i);
+        const double a2 = test::printed_A2(mix[i].density, s, c.chi[k][i], T[k], T[i], mix[k].mass, mix[i].mass, e);
+        xi_ref += a2, xi_abs += std::abs(a2);
+        tau_ref += test::printed_A1(mix[i].density, s, c.chi[k][i], T[k], T[i], mix[k].mass, mix[i].mass, e);
+      }
+      CHECK(std::abs(xi[k] - xi_ref) <= 1e-13 * xi_abs);
+      CHECK(tau[k] == Approx(tau_ref).epsilon(1e-13));
+      // One pass for both, either alone, and the single-species sums: the same numbers.
+      CHECK(xi_only[k] == xi[k]);
+      CHECK(tau_only[k] == tau[k]);
+      CHECK(r.xi_species(k, T.data()) == xi[k]);
+      CHECK(r.inv_tau_v_species(k, T.data()) == tau[k]);
+    }
+  }
+}
+
+TEST_CASE("50 species at eps = 1 and equal temperatures: every xi_k is exactly 0", "[theory]") {
+  // ξ_k = c (D S_k − W2 U_k/T_k) with D = 0 and U_k a sum of terms ∝ (T_i − T_k) = 0: no rounding
+  // residue, which at t = 1e12 would become a drift of ln T.
+  const std::size_t N = 50;
+  const CollisionRates r(test::power_law(N), model::Restitution::constant(N, 1.0),
+                         model::enskog_contact_values(model::with_reduced_density(test::power_law(N), 0.2)));
+  std::vector<double> T(N, 0.37), xi(N, 1.0);
+  r.xi_all(T.data(), xi.data());
+  for (std::size_t k = 0; k < N; ++k) CHECK(xi[k] == 0.0);
+}
+
+TEST_CASE("the rates refuse an asymmetric chi, naming it", "[theory]") {
+  const model::Mixture mix({{1, 1, 0.1}, {2, 1.2, 0.1}});
+  CHECK_THROWS_WITH(CollisionRates(mix, model::Restitution::constant(2, 0.5), {{1.0, 1.1}, {1.2, 1.0}}),
+                    Catch::Contains("χ must be symmetric"));
 }

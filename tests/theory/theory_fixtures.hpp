@@ -1,6 +1,7 @@
 #pragma once
 // Mixtures of the papers used by several theory tests.
 #include <cmath>
+#include <numbers>
 
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
@@ -38,6 +39,18 @@ inline model::Mixture power_law(std::size_t species, double theta = 3) {
   model::PowerLaw p;
   p.n1 = 0.1, p.theta = theta, p.n1_particles = 1e30, p.max_species = species;
   return model::power_law_mixture(p);
+}
+
+// v1 Eqs. (A1), (A2) exactly as printed (g2 = χ): τ_v,ki⁻¹ and ξ_ki.
+inline double printed_A2(double ni, double s, double chi, double Tk, double Ti, double mk, double mi, double e) {
+  const double V = (Tk * mi + Ti * mk) / (mi * mk), pi = std::numbers::pi;
+  return 8.0 / 3.0 * std::sqrt(2 * pi) * ni * s * s * chi * std::sqrt(V) * (1 + e) * (mi / (mi + mk)) *
+         (1 - 0.5 * (1 + e) * (Ti * mk + Tk * mi) / (Tk * (mi + mk)));
+}
+inline double printed_A1(double ni, double s, double chi, double Tk, double Ti, double mk, double mi, double e) {
+  const double pi = std::numbers::pi;
+  return 8 * std::sqrt(2 * pi) / 3 * ni * s * s * chi * (mi / (mi + mk)) * (Tk * mi + Ti * mk) / (Tk * (mi + mk)) *
+         std::sqrt((Tk * mi + Ti * mk) / (mi * mk)) * (1 + e) * (1 + e) / 4;
 }
 
 }  // namespace granmix::test
