@@ -84,7 +84,8 @@ class EventLoop {
   void reset_clock() {
     t_ = 0.0;
     ts_ = 0.0, t_e1_ = 0.0, e1_start_ = e1_;
-    if (p_.track_displacement) std::fill(p_.flight.begin(), p_.flight.end(), Vec3{0, 0, 0});  // R = R0 + v·0 = 0
+    if (p_.track_displacement) std::fill(p_.flight.begin(), p_.flight.end(), Vec3f{0, 0, 0});  // R = R0_e + v·0 = 0
+    p_.epoch = 0.0;
     c_.reset(p_.species());
   }
 
@@ -131,6 +132,7 @@ class EventLoop {
         sel_.refresh(p_);
         energy_ = kinetic_energy(p_);  // drop the rounding accumulated over N collisions
         e1_ = species_energy(p_, 0);
+        reanchor(p_, t_);  // keeps |R0_e| of the order of the displacement (particles.hpp)
         since_refresh_ = 0;
         ++c_.refreshes;
         if (at_refresh_) at_refresh_();  // before the next proposal is drawn (resume() draws it)
