@@ -6,8 +6,8 @@
 
 namespace granmix::dsmc {
 
-// At time t. With displacements (v1 Eq. 15), each flight intercept R0 = R − v t changes by −Δv t, so
-// that R(t) = R0 + v t is continuous through the collision (particles.hpp).
+// At time t. With displacements (v1 Eq. 15), each flight intercept R0_e = R − v (t − t_e) changes by
+// −Δv (t − t_e), so that R(t) = R0_e + v (t − t_e) is continuous through the collision (particles.hpp).
 inline void collide(Particles& p, std::size_t a, std::size_t b, double ma, double mb, double eps, const Vec3& e, double g_dot_e,
                     double t) {
   const double impulse = (1.0 + eps) * g_dot_e / (ma + mb);  // J / (m_a m_b) with J = m_eff (1+ε) g·e
@@ -16,10 +16,10 @@ inline void collide(Particles& p, std::size_t a, std::size_t b, double ma, doubl
   va.x -= da * e.x, va.y -= da * e.y, va.z -= da * e.z;
   vb.x += db * e.x, vb.y += db * e.y, vb.z += db * e.z;
   if (!p.track_displacement) return;
-  const double ra = da * t, rb = db * t;
-  Vec3 &r0a = p.flight[a], &r0b = p.flight[b];
-  r0a.x += ra * e.x, r0a.y += ra * e.y, r0a.z += ra * e.z;
-  r0b.x -= rb * e.x, r0b.y -= rb * e.y, r0b.z -= rb * e.z;
+  const double since_epoch = t - p.epoch;
+  const double ra = da * since_epoch, rb = db * since_epoch;  // Δv_a = −da e, Δv_b = +db e
+  add_scaled(p.flight[a], ra, e);
+  add_scaled(p.flight[b], -rb, e);
 }
 
 }  // namespace granmix::dsmc

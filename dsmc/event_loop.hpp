@@ -87,7 +87,8 @@ class EventLoop {
   void reset_clock() {
     t_ = 0.0;
     ts_ = 0.0, t_e1_ = 0.0, e1_start_ = e1_;
-    if (p_.track_displacement) std::fill(p_.flight.begin(), p_.flight.end(), Vec3{0, 0, 0});  // R = R0 + v·0 = 0
+    if (p_.track_displacement) std::fill(p_.flight.begin(), p_.flight.end(), Vec3f{0, 0, 0});  // R = R0_e + v·0 = 0
+    p_.epoch = 0.0;
     c_.reset(p_.species());
   }
 
@@ -136,6 +137,7 @@ class EventLoop {
         check_energy_balance(e_particles);
         energy_ = energy_at_refresh_ = e_particles;  // drop the rounding accumulated over N collisions
         e1_ = species_energy(p_, 0);
+        reanchor(p_, t_);  // keeps |R0_e| of the order of the displacement (particles.hpp)
         since_refresh_ = 0;
         ++c_.refreshes;
         if (at_refresh_) at_refresh_();  // before the next proposal is drawn (resume() draws it)

@@ -62,12 +62,19 @@ Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std:
       p.v[j] = {u.x + f * p.v[j].x, u.y + f * p.v[j].y, u.z + f * p.v[j].z};
   }
   p.track_displacement = track_displacement;
-  if (track_displacement) p.flight.assign(N, Vec3{0, 0, 0});
+  if (track_displacement) p.flight.assign(N, Vec3f{0, 0, 0});
   return p;
 }
 
 double species_temperature(const Particles& p, std::size_t k) {
   return 2.0 * species_energy(p, k) / (3.0 * static_cast<double>(p.count(k)));  // T_k = m_k ⟨v²⟩/3
+}
+
+void reanchor(Particles& p, double t) {
+  if (!p.track_displacement) return;
+  const double since_epoch = t - p.epoch;
+  for (std::size_t j = 0; j < p.size(); ++j) add_scaled(p.flight[j], since_epoch, p.v[j]);
+  p.epoch = t;
 }
 
 double speed_max(const Particles& p, std::size_t k) {

@@ -311,8 +311,9 @@ std::size_t samples_before(const Plan& pl, std::size_t stop) {
   return n;
 }
 
-bool all_finite(const std::vector<Vec3>& v) {
-  for (const Vec3& x : v)
+template <class V>
+bool all_finite(const std::vector<V>& v) {
+  for (const V& x : v)
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z)) return false;
   return true;
 }
@@ -359,7 +360,7 @@ void check_snapshot(const DsmcSetup& s, std::size_t r, const ReplicaSnapshot& x,
   const bool track = s.msd || tamsd;
   if (p.v.size() != offset.back() || p.track_displacement != track || p.flight.size() != (track ? p.v.size() : 0))
     refuse("particle records");
-  if (!all_finite(p.v) || !all_finite(p.flight)) refuse("a velocity or displacement that is not finite");
+  if (!all_finite(p.v) || !all_finite(p.flight) || !std::isfinite(p.epoch)) refuse("a velocity or displacement that is not finite");
   if (!Rng(s.seed, r).restore(x.rng)) refuse("random stream state");
   const LoopState& l = x.loop;
   if (!std::isfinite(l.t) || !std::isfinite(l.ts) || !std::isfinite(l.t_e1) || !std::isfinite(l.e1_start) ||

@@ -10,7 +10,7 @@ namespace granmix::dsmc {
 
 namespace {
 
-constexpr std::uint32_t format_version = 1, endian_tag = 0x01020304;
+constexpr std::uint32_t format_version = 2, endian_tag = 0x01020304;
 constexpr std::size_t magic_size = 8, checksum_size = 64;
 
 std::string magic(SnapshotKind kind) { return std::string("GRANMIX") + static_cast<char>(kind); }
@@ -104,7 +104,8 @@ std::string encode_snapshot(const SnapshotIdentity& id, const ReplicaSnapshot& s
   ByteWriter w;
   w.put<std::uint8_t>(s.aging), w.put(s.stop);
   const Particles& p = s.particles;
-  w.put_vector(p.offset), w.put_vector(p.mass), w.put_vector(p.v), w.put<std::uint8_t>(p.track_displacement), w.put_vector(p.flight);
+  w.put_vector(p.offset), w.put_vector(p.mass), w.put_vector(p.v), w.put<std::uint8_t>(p.track_displacement), w.put(p.epoch);
+  w.put_vector(p.flight);
   w.put_string(s.rng);
   w.put(s.loop.t), w.put(s.loop.ts), w.put(s.loop.t_e1), w.put(s.loop.e1_start), w.put(s.loop.steps), w.put_vector(s.loop.carry);
   put_counters(w, s.counters);
@@ -133,7 +134,7 @@ ReplicaSnapshot decode_snapshot(std::string_view bytes, const std::string& file,
     s.aging = in.get<std::uint8_t>() != 0, s.stop = in.get<std::uint64_t>();
     Particles& p = s.particles;
     p.offset = in.get_vector<std::size_t>(), p.mass = in.get_vector<double>(), p.v = in.get_vector<Vec3>();
-    p.track_displacement = in.get<std::uint8_t>() != 0, p.flight = in.get_vector<Vec3>();
+    p.track_displacement = in.get<std::uint8_t>() != 0, p.epoch = in.get<double>(), p.flight = in.get_vector<Vec3f>();
     s.rng = in.get_string();
     s.loop.t = in.get<double>(), s.loop.ts = in.get<double>(), s.loop.t_e1 = in.get<double>(), s.loop.e1_start = in.get<double>();
     s.loop.steps = in.get<std::uint64_t>(), s.loop.carry = in.get_vector<double>();

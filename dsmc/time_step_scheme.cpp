@@ -18,9 +18,13 @@ void TimeStepScheme::run_until(double t_stop) {
   while (t_ < t_stop) {
     const double v01 = std::sqrt(2.0 * species_temperature(p_, 0) / p_.mass[0]);
     const double dt = std::min(factor_ * lambda11 / v01, t_stop - t_);
+    const std::uint64_t anchors = c_.accepted / p_.size();
     step(dt);
     t_ = (t_stop - t_ <= dt) ? t_stop : t_ + dt;
     ++steps_;
+    // Re-anchor the flight intercepts every N collisions, as the event loop does (particles.hpp);
+    // a function of the counters, so a snapshot at a step boundary restores it.
+    if (c_.accepted / p_.size() != anchors) reanchor(p_, t_);
     if (after_step_) after_step_();
   }
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 
 #include "dsmc/checkpoint_files.hpp"
 #include "dsmc/replica_run.hpp"
@@ -142,6 +143,9 @@ TEST_CASE("damaged and foreign checkpoint files are refused naming the file and 
   std::swap(swapped[12], swapped[15]), std::swap(swapped[13], swapped[14]);
   refused(swapped, "other byte order");
   refused("hello", "not a granmix checkpoint");
+  std::string format1 = good;  // a file of the format before the float intercepts (epoch not stored)
+  format1[8] = 1, format1[9] = format1[10] = format1[11] = 0;
+  refused(format1, "checkpoint format 1, this granmix reads format 2");
   // Another version and another scene: valid files of another identity.
   dsmc::SnapshotIdentity id = dsmc::snapshot_identity(ck, s, 0);
   dsmc::ReplicaSnapshot x = dsmc::decode_snapshot(good, "f", id);
@@ -149,8 +153,11 @@ TEST_CASE("damaged and foreign checkpoint files are refused naming the file and 
   refused(dsmc::encode_snapshot(id, x), "written by granmix 0.0.9");
   id = dsmc::snapshot_identity(ck, s, 0), id.scene_sha256 = std::string(64, 'b');
   refused(dsmc::encode_snapshot(id, x), "another scene");
-  // A valid file that does not fit the run (one sample too few for its stop).
+  // A valid file that does not fit the run: an epoch that is not finite; one sample too few for its stop.
   id = dsmc::snapshot_identity(ck, s, 0);
+  x.particles.epoch = std::numeric_limits<double>::quiet_NaN();
+  refused(dsmc::encode_snapshot(id, x), "not finite");
+  x.particles.epoch = 0.0;
   x.record.T.push_back(1.0);
   refused(dsmc::encode_snapshot(id, x), "samples taken so far");
   // A file of a unit the run does not plan.
