@@ -155,9 +155,13 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
         if not build(src, bld, logs / f"{m['id']}.build.log", "granmix"):
             return "build-failed", f"see {logs / (m['id'] + '.build.log')}"
         with tempfile.TemporaryDirectory(prefix="granmix-mutant-") as out_dir:
-            rc, _ = run([str(bld / "granmix"), "validate", "--fidelity", "quick", "--out", out_dir, "--threads", str(JOBS),
-                         "--scenes", str(src / "compare" / "scenes")], logs / f"{m['id']}.validate.log", cwd=src)
+            rc, out = run([str(bld / "granmix"), "validate", "--fidelity", "quick", "--out", out_dir, "--threads", str(JOBS),
+                           "--scenes", str(src / "compare" / "scenes")], logs / f"{m['id']}.validate.log", cwd=src)
             if rc != 0:
+                # No failing row: the run stopped before comparing (a solver failure names itself).
+                stopped = [l.split(": ", 1)[1][:200] for l in out.splitlines() if l.startswith("granmix: ")][:1]
+                if stopped and not validate_failures(Path(out_dir)):
+                    return "caught", "validate stopped: " + stopped[0]
                 why = validate_failures(Path(out_dir)) or ["(no failing row)"]
                 note = "timeout" if rc is None else ("" if rc == 1 else f"exit {rc}")
                 return "caught", "validate: " + " ".join(why) + (f" [{note}]" if note else "")
@@ -174,6 +178,8 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
 
 def fmt_caught_by(s, limit=4):
     kind, _, rest = s.partition(": ")
+    if kind == "validate stopped":  # one message, not a list of rows
+        return s
     items = rest.split(" | ") if kind == "ctest" else rest.split(" ")
     if len(items) <= limit:
         return s
