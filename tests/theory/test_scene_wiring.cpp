@@ -1,0 +1,60 @@
+// The path from a scene file to the theory's inputs, against definitions written here: the Enskog
+// contact values a dense scene's rates carry, and MG's time unit. Both enter theory and DSMC alike
+// or cancel in the judged ratios, so no theory–DSMC comparison can see an error in them.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "model/enskog.hpp"
+#include "model/scene.hpp"
+#include "theory/collision_rates.hpp"
+#include "theory/scene_theory.hpp"
+
+using namespace granmix;
+using namespace granmix::theory;
+using std::numbers::pi;
+
+TEST_CASE("a dense scene's theory rates carry the Carnahan-Starling chi: two identical species at n sigma^3 = 0.3, rates = dilute x chi_CS", "[theory]") {
+  // The path from a scene to its rates (theory/scene_theory.cpp), against χ written here: for
+  // identical species the Enskog contact value is Carnahan–Starling, χ = (1 − φ/2)/(1 − φ)³,
+  // φ = π n σ³/6 with the total n (MG Eq. 26 with equal sizes). Every rate of the dense gas is the dilute rate times χ, so a wrong χ
+  // anywhere on that path shows here at the size of the error (ratios of rates would hide it).
+  const model::Scene s = model::load_scene_text(R"([scene]
+name = "dense-identical-species"
+[mixture]
+species = [{ mass = 1, diameter = 1, density = 0.05 }, { mass = 1, diameter = 1, density = 0.05 }]
+[collisions]
+restitution = 0.8
+[observables]
+gamma = true
+[theory]
+sweep = { parameter = "n_star", from = 0, to = 0.4, points = 3 }
+[time]
+times = [50, 100]
+)",
+                                                "dense-identical-species.toml");
+  const model::Scene p = model::sweep_point(s, 0.3);
+  REQUIRE(p.enskog);
+  REQUIRE((p.mixture[0].density + p.mixture[1].density) * std::pow(p.mixture[0].diameter, 3) == Approx(0.3).epsilon(1e-12));
+  const double phi = pi * 0.3 / 6.0, chi_cs = (1.0 - phi / 2.0) / std::pow(1.0 - phi, 3);
+  const CollisionRates dense = scene_rates(p, p.mixture, p.restitution);
+  const CollisionRates dilute(p.mixture, p.restitution, model::dilute_contact_values(2));
+  const double T[] = {1.7, 0.6};  // unequal: the (X − 1) terms take part
+  std::printf("identical species, n sigma^3 = 0.3: chi_CS = %.9f, xi ratio = %.9f, 1/tau_v ratio = %.9f\n", chi_cs,
+              dense.xi_species(0, T) / dilute.xi_species(0, T), dense.inv_tau_v_species(0, T) / dilute.inv_tau_v_species(0, T));
+  CHECK(dense.xi_species(0, T) / dilute.xi_species(0, T) == Approx(chi_cs).epsilon(1e-12));  // a 3% χ error is 3e10 times this bound
+  CHECK(dense.inv_tau_v_species(0, T) / dilute.inv_tau_v_species(0, T) == Approx(chi_cs).epsilon(1e-12));
+}
+
+TEST_CASE("MG time unit: t0 = lambda11 / v01(0), lambda11 = 1/(sqrt(2) pi n1 sigma11^2), v01 = sqrt(2 T1/m1) - mg-fig01", "[theory]") {
+  // physics.md §MG (Montanero & Garzó 2002, Sec. IV): times in units of the mean free time of species 1
+  // at the start. mg-fig01 starts at equal temperatures, ⟨T⟩ = 1, so T1(0) = 1.
+  const model::Scene s = model::load_scene(std::string(GRANMIX_SOURCE_DIR) + "/compare/scenes/mg-fig01.toml");
+  const model::Species& a = s.mixture[0];
+  const double lambda11 = 1.0 / (std::sqrt(2.0) * pi * a.density * a.diameter * a.diameter);
+  const double t0 = lambda11 / std::sqrt(2.0 * 1.0 / a.mass);
+  std::printf("mg-fig01: n1 = %.9g, sigma11 = %.9g, m1 = %.9g: t0 = %.12g, scene unit = %.12g\n", a.density, a.diameter,
+              a.mass, t0, scene_time_unit(s));
+  CHECK(scene_time_unit(s) == Approx(t0).epsilon(1e-13));  // a 3% unit error is 3e11 times this bound
+}
