@@ -63,10 +63,13 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (increments) t.columns.push_back("D_ratio_increment");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
-  if (relative) t.columns.push_back("gamma_ratio");
+  // gamma_ratio_maxwell: the same ratio from Maxwellian γ's, so that a scene can judge the first-Sonine
+  // ratio with its last correction as model error (correction_from = "maxwell").
+  if (relative) t.columns.push_back("gamma_ratio"), t.columns.push_back("gamma_ratio_maxwell");
   if (o.cumulant) t.columns.push_back("c");
   auto sonine_of = [](const model::Scene& p, bool maxwell) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), maxwell); };
   const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0), false).gamma() : nan;
+  const double gamma0_maxwell = relative ? sonine_of(model::sweep_point(s, 0.0), true).gamma() : nan;
   for (double x : sw.values) {
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
@@ -83,7 +86,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
       if (increments) row.push_back(k > 1 ? inc[k - 1] : nan);  // species 1: 1 by construction
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
-      if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0);
+      if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0), row.push_back(k ? nan : maxwell.gamma() / gamma0_maxwell);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
       t.rows.push_back(std::move(row));
     }
