@@ -9,7 +9,7 @@
 #include "model/sha256.hpp"
 #include "theory/initial_state.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/tracer_limit.hpp"
+#include "theory/theory_level.hpp"
 
 namespace granmix::dsmc {
 
@@ -179,9 +179,9 @@ DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
   if (d.aged) {
     d.T0.assign(s.mixture.size(), s.initial.T_hot);
   } else if (s.theory.tracer) {
-    // Tracer scenes: start where the tracer theory starts (gas T1 = 1, intruders θ), not at the settled
-    // state of the finite mixture, whose ⟨T⟩ = 1 normalisation would cool the gas by n2 θ / n1.
-    d.T0 = {1.0, theory::tracer_limit(rates).theta};
+    // Tracer scenes: start where the judged level's tracer theory starts (gas T1 = 1, intruders at its θ), not
+    // at the settled state of the finite mixture, whose ⟨T⟩ = 1 normalisation would cool the gas by n2 θ / n1.
+    d.T0 = {1.0, theory::make_theory_level(s.theory.level)->tracer(rates).theta};
   } else {
     d.T0 = theory::initial_temperatures(s.initial, rates);
   }

@@ -12,7 +12,6 @@
 #include "sonine_hcs.hpp"
 #include "tamsd.hpp"
 #include "time_unit.hpp"
-#include "tracer_limit.hpp"
 
 namespace granmix::theory {
 
@@ -147,9 +146,10 @@ Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
   return t;
 }
 
-// Tracer limit: every curve in closed form (gas: Haff; intruder: θ times Haff).
-std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& rates) {
-  const TracerLimit tl = tracer_limit(rates);
+// Tracer limit in the level's closure: every curve in closed form (gas: Haff; intruder: θ times Haff), the
+// MSD and the TAMSD from the same velocity correlation (D, τ_v, τ₀).
+std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level) {
+  const TracerLimit tl = level.tracer(rates);
   const double D[2] = {tl.D_gas, tl.D_intruder}, tv[2] = {tl.tau_v_gas, tl.tau_v_intruder};
   std::vector<Sample> out;
   for (double t : s.times) {
@@ -240,7 +240,7 @@ Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& 
   if (s.theory.sweep) return sweep_table(s, level);
   if (s.observables.distribution_settled) return distribution_table(s);
   const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
-  return time_table(s, s.theory.tracer ? tracer_samples(s, rates) : history_samples(s, rates, level, stats));
+  return time_table(s, s.theory.tracer ? tracer_samples(s, rates, level) : history_samples(s, rates, level, stats));
 }
 
 // Appends the value columns of `paper` (same rows) as `<column>_paper`.

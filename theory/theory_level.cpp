@@ -10,6 +10,7 @@
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
 #include "sonine_pair_terms.hpp"
+#include "sonine_tracer.hpp"
 
 namespace granmix::theory {
 
@@ -29,6 +30,7 @@ class PaperLevel final : public TheoryLevel {
     return theory::initial_temperatures(init, rates);
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return theory::settled_temperatures(rates).T; }
+  TracerLimit tracer(const CollisionRates& rates) const override { return tracer_limit(rates); }
 };
 
 // The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
@@ -100,6 +102,7 @@ class KineticLevel final : public TheoryLevel {
     if (!sonine_applies(rates) || rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
   }
+  TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates); }
 };
 
 }  // namespace

@@ -7,6 +7,9 @@
 //            by the velocity-autocorrelation ODE (§2) decaying at ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], i.e. the
 //            second-Sonine D at long times (§3), settled states of the first-Sonine HCS (MG App. A); for a
 //            viscoelastic law the same integrals by quadrature over the impact speed (sonine_quadrature.hpp).
+// Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
+// Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
+// second-Sonine D); both give the MSD and the TAMSD from one velocity correlation in closed form.
 // A level is a type, chosen once per scene: the code that computes curves never asks which it is.
 #include <memory>
 #include <string>
@@ -17,6 +20,7 @@
 #include "model/scene.hpp"
 #include "msd.hpp"
 #include "temperature_history.hpp"
+#include "tracer_limit.hpp"
 
 namespace granmix::theory {
 
@@ -36,6 +40,8 @@ class TheoryLevel {
                                                    TemperatureOptions& opt) const = 0;
   // The level's settled temperatures (⟨T⟩ = 1).
   virtual std::vector<double> settled_temperatures(const CollisionRates& rates) const = 0;
+  // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1.
+  virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
 };
 
 // "paper" or "kinetic" (scene.theory.level); throws std::invalid_argument otherwise.

@@ -3,6 +3,7 @@
 // the intruder with n_2 → 0. The gas follows Haff's law alone; the intruder temperature ratio
 // θ = T_2/T_1 is the root of ξ_21(θ) = ξ_11 with intruder–intruder collisions dropped, and the
 // intruder's velocity correlation time is τ_v,21 alone. Values at T_1 = ⟨T⟩ = 1.
+// This is the paper level's tracer form; the kinetic level's is sonine_tracer.hpp.
 #include "collision_rates.hpp"
 
 namespace granmix::theory {
@@ -15,5 +16,9 @@ struct TracerLimit {
 };
 
 TracerLimit tracer_limit(const CollisionRates& rates);
+
+// The Maxwellian velocity memories τ_v,11 and τ_v,21 (v1 A1) and D_k = T_k τ_v,k/m_k (v1 Eq. 19) at
+// T_1 = 1, T_2 = θ, with the given Haff time: the tracer state of any closure of θ and τ₀.
+TracerLimit tracer_state(const CollisionRates& rates, double theta, double tau0);
 
 }  // namespace granmix::theory
