@@ -7,7 +7,7 @@
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
-// "one_species_truncation" {eps, a2_sonine1, a2_sonine2, a3_sonine2, a2_relative_change} of one species at
+// "one_species_truncation" {eps, a2_sonine1, a2_sonine2, a3_sonine2, a3_given_a2_sonine1, a2_relative_change} of one species at
 // that ε (a proxy for near-equal species, not a mixture calculation). Fields that cannot be computed are
 // omitted, never filled.
 #include <fmt/format.h>
@@ -98,13 +98,14 @@ int run(const HcsOptions& o) {
                                {"D_ratio", d.D_ratio[k]},
                                {"tail_exponent", sonine.tail_exponent(k)}};
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
-      if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->a2_second, s["a3_sonine2"] = trunc->a3_second;
+      if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       j["species"].push_back(s);
     }
     if (has_tau0) j["tau0"] = d.tau0;
     j["zeta_star"] = sonine.zeta_star;
     if (trunc && mix.size() > 1) {
-      nlohmann::ordered_json t{{"eps", eps_one}, {"a2_sonine1", trunc->a2_first}, {"a2_sonine2", trunc->a2_second}, {"a3_sonine2", trunc->a3_second}};
+      nlohmann::ordered_json t{{"eps", eps_one}, {"a2_sonine1", trunc->a2_first}, {"a2_sonine2", trunc->linear.a2}, {"a3_sonine2", trunc->linear.a3},
+                               {"a3_given_a2_sonine1", trunc->a2_fixed.a3}};
       if (std::isfinite(trunc->a2_relative())) t["a2_relative_change"] = trunc->a2_relative();  // 0/0 at ε = 1
       j["one_species_truncation"] = t;
     }
@@ -120,7 +121,7 @@ int run(const HcsOptions& o) {
   std::printf("zeta_star = %.17g   (first-Sonine reduced cooling rate, MG units n sigma12^2 v0)\n", sonine.zeta_star);
   if (trunc)
     std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
-                eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->a2_second, trunc->a3_second, trunc->a2_relative());
+                eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());
   if (has_tau0)
     std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);
   else

@@ -7,27 +7,27 @@
 #include "model/restitution.hpp"
 #include "sonine_hcs.hpp"
 #include "sonine_polynomials.hpp"
-#include "sonine_second_order.hpp"
 
 namespace granmix::theory {
 
-double SonineTruncation::a2_relative() const { return std::abs(a2_second - a2_first) / std::abs(a2_first); }
+double SonineTruncation::a2_relative() const { return std::abs(linear.a2 - a2_first) / std::abs(a2_first); }
 
-double SonineTruncation::phi_a3_relative(double c) const {
+double SonineTruncation::phi_a3_relative(double c, SonineScheme s) const {
   const double x = c * c;
-  return std::abs(a3_second * sonine_S3(x)) / std::abs(1.0 + a2_first * sonine_S2(x));
+  return std::abs(second(s).a3 * sonine_S3(x)) / std::abs(1.0 + a2_first * sonine_S2(x));
 }
 
-double SonineTruncation::phi_relative(double c) const {
+double SonineTruncation::phi_relative(double c, SonineScheme s) const {
   const double x = c * c;
-  return std::abs((a2_second - a2_first) * sonine_S2(x) + a3_second * sonine_S3(x)) / std::abs(1.0 + a2_first * sonine_S2(x));
+  const SecondSonine& f = second(s);
+  return std::abs((f.a2 - a2_first) * sonine_S2(x) + f.a3 * sonine_S3(x)) / std::abs(1.0 + a2_first * sonine_S2(x));
 }
 
-double SonineTruncation::delta_shift(double c) const { return a3_second / a2_second * sonine_S3(c * c); }
+double SonineTruncation::delta_shift(double c, SonineScheme s) const { return second(s).a3 / second(s).a2 * sonine_S3(c * c); }
 
-double SonineTruncation::delta_a3_relative(double c) const {
+double SonineTruncation::delta_a3_relative(double c, SonineScheme s) const {
   const double x = c * c;
-  return std::abs(a3_second * sonine_S3(x)) / std::abs(a2_second * sonine_S2(x));
+  return std::abs(second(s).a3 * sonine_S3(x)) / std::abs(second(s).a2 * sonine_S2(x));
 }
 
 SonineTruncation sonine_truncation(double alpha) {
@@ -37,7 +37,7 @@ SonineTruncation sonine_truncation(double alpha) {
   const SonineHcs first = sonine_hcs(model::Mixture({{1.0, 1.0, 1.0}}), model::Restitution::constant(1, alpha),
                                      model::dilute_contact_values(1));
   const double a2_first = 0.5 * first.c[0];
-  return {alpha, a2_first, second.a2, second.a3, third_sonine_given_a2(alpha, a2_first)};
+  return {alpha, a2_first, second, {a2_first, third_sonine_given_a2(alpha, a2_first)}};
 }
 
 }  // namespace granmix::theory
