@@ -151,7 +151,7 @@ TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapm
   CHECK(text.output.find("1.0172414") != std::string::npos);  // 59/58 = 1.01724138 to the column's 8 digits
 }
 
-TEST_CASE("granmix hcs: second-Sonine a2, a3 of one species; the one-species truncation object of a mixture", "[compare]") {
+TEST_CASE("granmix hcs: second-Sonine a2 and a3 of one species - and the one-species truncation object of a mixture", "[compare]") {
   const auto one = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 0.5 --json");
   INFO(one.output);
   REQUIRE(one.code == 0);

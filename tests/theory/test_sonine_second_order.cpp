@@ -209,7 +209,7 @@ TEST_CASE("truncation estimate: the second-order distributions, their measured c
   }
 }
 
-TEST_CASE("truncation table for the lead (printed): eps, a2[1], a2[2], a3[2], delta_a2, a3 share of Phi and Delta", "[theory]") {
+TEST_CASE("truncation table for the lead (printed): first- and second-order a2 and a3 and the a3 share of Phi and Delta", "[theory]") {
   using enum SonineScheme;
   std::printf("%-5s %-10s %-10s %-10s %-10s %-7s | %-7s %-7s %-7s | %-7s %-7s %-7s | %-7s %-7s %-7s %-7s\n", "eps", "a2[1]", "a2[2]",
               "a3[2]", "a3|a2[1]", "d_a2", "Phi0.5", "Phi1", "Phi1.5", "Phi0.5'", "Phi1'", "Phi1.5'", "Dlt0", "Dlt0.5", "Dlt0'",
