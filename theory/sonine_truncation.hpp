@@ -15,7 +15,7 @@ namespace granmix::theory {
 //   linear:   (a₂[2], a₃[2]) of the linear ⟨c⁴⟩, ⟨c⁶⟩ system (Brilliantov & Pöschel 2006);
 //   a2_first: a₂ kept at a₂[1], a₃ from the ⟨c⁶⟩ balance alone (third_sonine_given_a2; the variant Santos &
 //             Montanero and physics-beyond.md §5 favour). One-species DSMC at α = 0.5 (paper fidelity, seed 1,
-//             README) gives a₃/a₂ = −0.14 … −0.17 (by fit range): a2_first predicts −0.198, linear −0.393.
+//             README) gives a₃/a₂ = −0.11 … −0.17 (by seed and fit range): a2_first predicts −0.198, linear −0.393.
 enum class SonineScheme { linear, a2_first };
 
 struct SonineTruncation {
