@@ -4,12 +4,18 @@
 // Fields: T_ratio_maxwell (v1 Eq. A2), T_ratio_sonine and c (first-Sonine, MG App. A, any number of
 // species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), D_sonine2_factor = D_k[2]/D_k[1]
 // (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3), tau0 = 2/ξ
-// at ⟨T⟩ = 1, zeta_star in MG units. Fields that cannot be computed are omitted, never filled.
+// at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
+// one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
+// first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
+// "one_species_truncation" {eps, a2_sonine1, a2_sonine2, a3_sonine2, a3_given_a2_sonine1, a2_relative_change} of one species at
+// that ε (a proxy for near-equal species, not a mixture calculation). Fields that cannot be computed are
+// omitted, never filled.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 #include "commands.hpp"
 #include "model/enskog.hpp"
@@ -18,6 +24,7 @@
 #include "theory/diffusion.hpp"
 #include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
+#include "theory/sonine_truncation.hpp"
 
 namespace granmix::compare {
 
@@ -77,6 +84,10 @@ int run(const HcsOptions& o) {
   // NaN where the second-Sonine tracer problem has no diffusive solution (sonine2_diffusion.hpp).
   std::vector<double> sonine2(mix.size());
   for (std::size_t k = 0; k < mix.size(); ++k) sonine2[k] = theory::sonine2_factor(rates, k, d.T.data());
+  // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
+  const double eps_one = listed ? o.eps : o.alpha;
+  std::optional<theory::SonineTruncation> trunc;
+  if (eps_one >= 0) trunc = theory::sonine_truncation(eps_one);
   if (o.json) {
     nlohmann::ordered_json j;  // keys in the order of design.md §3
     j["species"] = nlohmann::ordered_json::array();
@@ -87,10 +98,17 @@ int run(const HcsOptions& o) {
                                {"D_ratio", d.D_ratio[k]},
                                {"tail_exponent", sonine.tail_exponent(k)}};
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
+      if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       j["species"].push_back(s);
     }
     if (has_tau0) j["tau0"] = d.tau0;
     j["zeta_star"] = sonine.zeta_star;
+    if (trunc && mix.size() > 1) {
+      nlohmann::ordered_json t{{"eps", eps_one}, {"a2_sonine1", trunc->a2_first}, {"a2_sonine2", trunc->linear.a2}, {"a3_sonine2", trunc->linear.a3},
+                               {"a3_given_a2_sonine1", trunc->a2_fixed.a3}};
+      if (std::isfinite(trunc->a2_relative())) t["a2_relative_change"] = trunc->a2_relative();  // 0/0 at ε = 1
+      j["one_species_truncation"] = t;
+    }
     std::printf("%s\n", j.dump().c_str());
     return 0;
   }
@@ -101,6 +119,9 @@ int run(const HcsOptions& o) {
                 mix[k].density, d.T[k] / d.T[0], sonine.T[k] / sonine.T[0], sonine.c[k], d.D_ratio[k], sonine.tail_exponent(k),
                 std::isfinite(sonine2[k]) ? fmt::format("{:.8g}", sonine2[k]).c_str() : "-");
   std::printf("zeta_star = %.17g   (first-Sonine reduced cooling rate, MG units n sigma12^2 v0)\n", sonine.zeta_star);
+  if (trunc)
+    std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
+                eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());
   if (has_tau0)
     std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);
   else

@@ -13,6 +13,7 @@
 #include "model/errors.hpp"
 #include "model/gsl_setup.hpp"
 #include "settled_ratios.hpp"
+#include "sonine_polynomials.hpp"
 #include "sonine_system.hpp"
 
 namespace granmix::theory {
@@ -139,8 +140,7 @@ SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha,
 }
 
 double SonineHcs::delta(std::size_t k, double v) const {
-  const double l = lambda[k], v2 = v * v;
-  return 0.5 * l * l * v2 * v2 - 2.5 * l * v2 + 15.0 / 8.0;  // MG Eq. (28)
+  return sonine_S2(lambda[k] * v * v);  // MG Eq. (28)
 }
 
 double maxwellian_phi(double lambda, double v) { return std::pow(lambda / std::numbers::pi, 1.5) * std::exp(-lambda * v * v); }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model/errors.hpp"
+#include "sonine_polynomials.hpp"
 
 namespace granmix::theory {
 
@@ -57,9 +58,6 @@ const double sqrt2 = std::sqrt(2.0);
 const std::array<double, 2> laguerre_x = {2.0 - sqrt2, 2.0 + sqrt2};
 const std::array<double, 2> laguerre_w = {(2.0 + sqrt2) / 4.0, (2.0 - sqrt2) / 4.0};
 
-double S1(double x) { return 2.5 - x; }
-double S2(double x) { return 0.5 * x * x - 2.5 * x + 15.0 / 8.0; }
-
 const WRule& w_rule() {
   static const WRule rule;
   return rule;
@@ -100,11 +98,11 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
         const double g = hermite.weight[h] * laguerre_w[l], R = 2.0 * theta_k * laguerre_x[l];
         const double v2 = R + zk * zk, v21 = R + zk1 * zk1;  // v_k², v_k′²
         const double x = v2 * inv2k, x1 = v21 * inv2k, cc = (R + zk * zk1) * inv2k;  // c², c′², c·c′
-        const double d2 = v21 - v2, d4 = v21 * v21 - v2 * v2, s2k = S2(x);
+        const double d2 = v21 - v2, d4 = v21 * v21 - v2 * v2, s2k = sonine_S2(x);
         e2[0] += g * d2, e2[1] += g * s2k * d2, e2[2] += g * S2i * d2;
         e4[0] += g * d4, e4[1] += g * s2k * d4, e4[2] += g * S2i * d4;
-        const double p0 = x - cc, p1 = x * S1(x) - cc * S1(x1);  // c·[c S_p(c²) − c′ S_p(c′²)], p = 0, 1
-        c00 += g * p0, c01 += g * S1(x) * p0, c10 += g * p1, c11 += g * S1(x) * p1;
+        const double p0 = x - cc, p1 = x * sonine_S1(x) - cc * sonine_S1(x1);  // c·[c S_p(c²) − c′ S_p(c′²)], p = 0, 1
+        c00 += g * p0, c01 += g * sonine_S1(x) * p0, c10 += g * p1, c11 += g * sonine_S1(x) * p1;
       }
     }
     const double m = flux * rule.weight[n];

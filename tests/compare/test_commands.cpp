@@ -16,6 +16,7 @@
 #include "theory/settled_ratios.hpp"
 #include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
+#include "theory/sonine_second_order.hpp"
 
 using namespace granmix;
 
@@ -148,6 +149,31 @@ TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapm
   const auto text = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 1");
   CHECK(text.output.find("D_sonine2_factor") != std::string::npos);
   CHECK(text.output.find("1.0172414") != std::string::npos);  // 59/58 = 1.01724138 to the column's 8 digits
+}
+
+TEST_CASE("granmix hcs: second-Sonine a2 and a3 of one species - and the one-species truncation object of a mixture", "[compare]") {
+  const auto one = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 0.5 --json");
+  INFO(one.output);
+  REQUIRE(one.code == 0);
+  const auto j = nlohmann::json::parse(one.output);
+  const theory::SecondSonine s = theory::second_sonine_hcs(0.5);
+  CHECK(j["species"][0]["a2_sonine2"].get<double>() == Approx(s.a2).epsilon(1e-14));
+  CHECK(j["species"][0]["a3_sonine2"].get<double>() == Approx(s.a3).epsilon(1e-14));
+  CHECK(j["species"][0]["c"].get<double>() / 2 != Approx(s.a2).epsilon(0.1));  // a₂[1] = 0.0525, a₂[2] = 0.0450
+  CHECK(!j.contains("one_species_truncation"));
+  // MG form with one alpha: the top-level proxy object; with per-pair alphas: none.
+  const auto mg = nlohmann::json::parse(test::run_granmix("hcs --mu 4 --delta 0.5 --w 1 --alpha 0.5 --json").output);
+  REQUIRE(mg.contains("one_species_truncation"));
+  const auto& t = mg["one_species_truncation"];
+  CHECK(t["eps"].get<double>() == 0.5);
+  CHECK(t["a2_sonine2"].get<double>() == Approx(s.a2).epsilon(1e-14));
+  CHECK(t["a2_sonine1"].get<double>() == Approx(0.5 * j["species"][0]["c"].get<double>()).epsilon(1e-14));
+  CHECK(t["a2_relative_change"].get<double>() == Approx(std::abs(s.a2 / t["a2_sonine1"].get<double>() - 1)).epsilon(1e-14));
+  CHECK(!mg["species"][0].contains("a2_sonine2"));
+  const auto pairs = nlohmann::json::parse(test::run_granmix("hcs --mu 4 --delta 0.5 --w 1 --alpha11 0.5 --alpha22 0.5 --alpha12 0.5 --json").output);
+  CHECK(!pairs.contains("one_species_truncation"));
+  const auto text = test::run_granmix("hcs --mu 4 --delta 0.5 --w 1 --alpha 0.5");
+  CHECK(text.output.find("one-species proxy") != std::string::npos);
 }
 
 TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "[compare]") {
