@@ -95,8 +95,9 @@ int run(const HcsOptions& o) {
       nlohmann::ordered_json s{{"T_ratio_maxwell", d.T[k] / d.T[0]},
                                {"T_ratio_sonine", sonine.T[k] / sonine.T[0]},
                                {"c", sonine.c[k]},
-                               {"D_ratio", d.D_ratio[k]},
-                               {"tail_exponent", sonine.tail_exponent(k)}};
+                               {"D_ratio", d.D_ratio[k]}};
+      // 2β_k/ζ* is infinite for an elastic gas (ζ* = 0, no exponential tail): omitted, never null.
+      if (std::isfinite(sonine.tail_exponent(k))) s["tail_exponent"] = sonine.tail_exponent(k);
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
       if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       j["species"].push_back(s);

@@ -146,6 +146,9 @@ TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapm
   INFO(r.output);
   REQUIRE(r.code == 0);
   CHECK(nlohmann::json::parse(r.output)["species"][0]["D_sonine2_factor"].get<double>() == Approx(59.0 / 58).epsilon(1e-14));
+  // No exponential tail without dissipation (2β/ζ* = ∞): the key is left out, never written as null.
+  CHECK_FALSE(nlohmann::json::parse(r.output)["species"][0].contains("tail_exponent"));
+  CHECK(r.output.find("null") == std::string::npos);
   const auto text = test::run_granmix("hcs --mass 2 --diameter 1 --density 0.3 --eps 1");
   CHECK(text.output.find("D_sonine2_factor") != std::string::npos);
   CHECK(text.output.find("1.0172414") != std::string::npos);  // 59/58 = 1.01724138 to the column's 8 digits
