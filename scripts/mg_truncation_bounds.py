@@ -16,6 +16,10 @@ Usage: scripts/mg_truncation_bounds.py [path/to/granmix]
 import json, subprocess, sys
 
 granmix = sys.argv[1] if len(sys.argv) > 1 else "build/granmix"
+# The Sonine polynomials of theory/sonine_polynomials.hpp (d = 3, x = c^2; S_n(0) > 0), restated here because
+# the bounds below scale the one-species changes to each MIXTURE species' own a2,k, which
+# SonineTruncation::phi_relative / delta_shift (one species, its own a2[1]) do not; a2, a3 themselves come from
+# granmix hcs (theory/sonine_second_order.cpp), not from this script.
 S2 = lambda x: 0.5 * x * x - 2.5 * x + 15 / 8
 S3 = lambda x: -x**3 / 6 + 1.75 * x * x - 35 / 8 * x + 35 / 16
 
