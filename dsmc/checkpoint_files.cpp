@@ -100,7 +100,10 @@ void verify_checkpoint_folder(const Checkpointing& c, const std::vector<DsmcSetu
                        " is not planned here; allowed: the checkpoint folder of this command with the same scenes, fidelity and seed)");
     const DsmcSetup& s = *it->second;
     const std::size_t r = std::stoull(index);
-    const std::string bytes = read_checkpoint_file(e.path()).value_or("");
+    const std::optional<std::string> read = read_checkpoint_file(e.path());
+    if (!read)  // listed a moment ago: a run still alive renamed or removed it
+      throw InputError(file + ": vanished while the checkpoint folder was read (allowed: a folder no running granmix writes in)");
+    const std::string& bytes = *read;
     if (ext == ".done") {
       (void)decode_done(bytes, file, snapshot_identity(c, s, r));
     } else {
