@@ -14,6 +14,12 @@ void MaxwellClosures::rates(const double* T, const double*, double* xi, double*)
   cached_ = true;
 }
 
+void VelocityDecay::correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
+                                      double* nu) const {
+  rates(T, xi, nu);
+  for (std::size_t k = 0; k < r.size(); ++k) dQ[k] = 3.0 * T[k] / r.mixture()[k].mass - Q[k] * nu[k];
+}
+
 void MaxwellClosures::rates(const double* T, const double* xi, double* nu) const {
   const std::size_t N = T_.size();
   if (cached_ && std::equal(T, T + N, T_.begin()))

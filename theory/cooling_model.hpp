@@ -2,8 +2,9 @@
 // The two closures of the temperature ODE, pluggable (physics-beyond.md §1, §4):
 //   CoolingModel   partial cooling rates ξ_k in dT_k/dt = −ξ_k T_k, possibly with extra unknowns z
 //                  integrated beside ln T_k (the relaxing Sonine cumulants, sonine_cooling.hpp);
-//   VelocityDecay  the decay rate ν_k of a tagged particle's velocity correlation in the VACF ODE
-//                  dQ_k/dt = 3T_k/m_k − ν_k Q_k (physics-beyond.md §2).
+//   VelocityDecay  the velocity correlation of a tagged particle in the VACF ODE: by default one mode,
+//                  dQ_k/dt = 3T_k/m_k − ν_k Q_k (physics-beyond.md §2); a model may bring more modes
+//                  per species (the kinetic level's second Sonine mode, sonine2_diffusion.hpp).
 // The defaults are the paper level (MaxwellClosures): Maxwellian ξ_k (v1 A2) and ν_k = τ_v,k⁻¹ + ξ_k/2,
 // the first-Sonine momentum-transfer rate (physics-beyond.md §1 identity). Implementations may keep scratch arrays
 // (no allocation per call), so one model object serves one integration at a time.
@@ -28,8 +29,15 @@ class CoolingModel {
 class VelocityDecay {
  public:
   virtual ~VelocityDecay() = default;
-  // ν_k at temperatures T, given the cooling rates ξ_k of the same state.
+  // ν_k at temperatures T, given the cooling rates ξ_k of the same state (the one-mode ODE's rate).
   virtual void rates(const double* T, const double* xi, double* nu) const = 0;
+  // Unknowns per species of the velocity correlation: Q_k = ⟨Δr_k·v_k⟩ and modes() − 1 more.
+  virtual std::size_t modes() const { return 1; }
+  // dQ/dt of the modes() blocks of N unknowns in Q (block 0: Q_k; d⟨R_k²⟩/dt = 2Q_k) at temperatures T and
+  // cooling rates ξ_k = −d ln T_k/dt. Default, one mode: dQ_k/dt = 3T_k/m_k − ν_k Q_k with ν_k of rates();
+  // nu: N values of scratch.
+  virtual void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
+                                 double* nu) const;
 };
 
 // The paper level, both closures in one object: ξ_k of v1 (A2) (= Garzó–Dufty at a₂ = 0) and

@@ -83,4 +83,20 @@ void SecondSonineDecay::rates(const double* T, const double*, double* nu) const 
   for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T);
 }
 
+void SecondSonineDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q,
+                                          double* dQ, double*) const {
+  const std::size_t N = rates_.size();
+  for (std::size_t k = 0; k < N; ++k) {
+    const SonineTracerSums s = sonine2_tracer_sums(rates_, *terms_, k, T);
+    const double q = Q[k], p = Q[N + k], source = 3.0 * T[k] / rates_.mixture()[k].mass;
+    if (!std::isfinite(sonine2_factor(s.C, s.xi))) {  // no diffusive second-Sonine solution: first-Sonine ν_k
+      const double nu1 = 0.5 * s.xi + rates_.inv_tau_v_species(k, T);
+      dQ[k] = source - nu1 * q, dQ[N + k] = -nu1 * p;
+      continue;
+    }
+    dQ[k] = source - (2.0 / 3.0) * s.C.C00 * q - (4.0 / 15.0) * s.C.C01 * p;
+    dQ[N + k] = xi[k] * p - (2.5 * xi[k] + (2.0 / 3.0) * s.C.C10) * q - (4.0 / 15.0) * s.C.C11 * p;
+  }
+}
+
 }  // namespace granmix::theory

@@ -54,17 +54,33 @@ double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* 
 
 // Velocity-decay rate of species k at the kinetic level (physics-beyond.md §3, last line):
 //   ν_eff,k = ξ_k/2 + (ν_k − ξ_k/2)·D_k[1]/D_k[2],  ν_k − ξ_k/2 = τ_v,k⁻¹ (physics-beyond.md §1),
-// so that the VACF form of the MSD (msd.hpp) gives D_k[2] in its diffusive regime. Where the factor
-// is NaN (see above) this is the first-Sonine ν_k, the rate the MSD needs without a diffusive regime.
+// the one-mode VACF rate with the diffusive D_k[2] (SecondSonineDecay::rates; the mixture's VACF ODE
+// integrates two modes instead, below). Where the factor is NaN (see above) this is the
+// first-Sonine ν_k, the rate the MSD needs without a diffusive regime.
 double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T);
 double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T);
 
-// The same as the VACF ODE's decay closure (the kinetic level's, theory_level.cpp).
+// The kinetic level's velocity correlation: the VACF ODE with two Sonine modes per species (issue 12).
+// Q_k = ⟨Δr_k·v_k⟩ = v_k Y₀ and P_k = v_k Y₁, Y_p = ⟨c S_p(c²)·Δr_k⟩, v_k = √(2T_k/m_k), from the Galerkin
+// equations of §3 in time (dv_k/dt = −ζ_k v_k/2 taken out of Y_p):
+//   dQ/dt = 3T_k/m_k − (2/3)C₀₀ Q − (4/15)C₀₁ P
+//   dP/dt = ζ_k P − (5ζ_k/2 + (2/3)C₁₀) Q − (4/15)C₁₁ P,   ζ_k = −d ln T_k/dt (the level's cooling rate),
+// Q = P = 0 at t = 0 for any start. From a Maxwellian start the velocity first decays at the first-Sonine
+// ν_k = (2/3)C₀₀ (P builds up over ~1/ν_k), and in the settled HCS the MSD slope is 6D_k[2]: the one-mode
+// closure with ν_eff decayed at the long-time rate from t = 0 and lost the velocity memory too early
+// (heavy species of bo1-fig06/-fig01: MSD up to 0.8% above DSMC at intermediate t, light ones 3–9% early).
+// Where the second-Sonine problem has no diffusive solution (sonine2_factor NaN, a large rare grain near
+// the Santos–Dufty edge) species k keeps one mode at the first-Sonine ν_k (as the one-mode closure did) and
+// its P relaxes at ν_k, decoupled.
 class SecondSonineDecay final : public VelocityDecay {
  public:
   // terms: pair terms shared with the cooling closure (null: the law's own).
   explicit SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms = nullptr);
+  // The one-mode equivalent ν_eff,k of kinetic_velocity_decay_rate (same long-time D).
   void rates(const double* T, const double*, double* nu) const override;
+  std::size_t modes() const override { return 2; }
+  void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
+                         double* nu) const override;
 
  private:
   const CollisionRates& rates_;

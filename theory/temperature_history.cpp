@@ -33,8 +33,8 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   z_at_ = n_, n_ += nz_;
   if (opt_.reduced_time) tau_at_ = n_, n_ += N_;
   if (opt_.diffusion_integral) int_at_ = n_, n_ += N_;
-  if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += 2 * N_;
-  kept_ = opt_.vacf ? j_at_ : n_;  // J = ⟨Δr·v⟩ is last and never read back: not kept
+  if (opt_.vacf) r2_at_ = n_, j_at_ = n_ + N_, n_ += (1 + decay_->modes()) * N_;
+  kept_ = opt_.vacf ? j_at_ : n_;  // J = ⟨Δr·v⟩ and its modes are last and never read back: not kept
   work_T_.resize(N_);
   work_a_.resize(N_);
   work_xi_.resize(N_);
@@ -75,7 +75,9 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
     const double v = 3.0 * T0_[k] / rates_.mixture()[k].mass;  // ⟨v_k²⟩(0)
     if (opt_.reduced_time) atol[tau_at_ + k] = opt_.rtol * t1;
     if (opt_.diffusion_integral) atol[int_at_ + k] = opt_.rtol * t1 * rates_.diffusion(k, T0_.data());
-    if (opt_.vacf) atol[r2_at_ + k] = opt_.rtol * v * t1 * t1, atol[j_at_ + k] = opt_.rtol * v * t1;
+    if (opt_.vacf) atol[r2_at_ + k] = opt_.rtol * v * t1 * t1;
+    if (opt_.vacf)
+      for (std::size_t j = 0; j < decay_->modes(); ++j) atol[j_at_ + j * N_ + k] = opt_.rtol * v * t1;  // modes ~ J
   }
   for (std::size_t j = 0; j < nz_; ++j) y[z_at_ + j] = z0[j], atol[z_at_ + j] = z_atol[j];
   y0_.assign(y, y + n_);
@@ -156,14 +158,11 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
   }
   if (self.opt_.vacf) {
     // A tagged velocity decays at ν_k (default τ_v⁻¹ + ξ_k/2, physics.md §3: (A1) is that rate minus
-    // ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant.
-    double* nu = self.work_nu_.data();
-    self.decay_->rates(T, xi, nu);
-    for (std::size_t k = 0; k < N; ++k) {
-      const double J = y[self.j_at_ + k];
-      dy[self.r2_at_ + k] = 2.0 * J * dt_ds;
-      dy[self.j_at_ + k] = (3.0 * T[k] / self.rates_.mixture()[k].mass - J * nu[k]) * dt_ds;
-    }
+    // ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant. The decay model may bring
+    // more modes (the kinetic level's second Sonine mode).
+    self.decay_->correlation_rates(self.rates_, T, xi, y + self.j_at_, dy + self.j_at_, self.work_nu_.data());
+    for (std::size_t k = 0; k < N; ++k) dy[self.r2_at_ + k] = 2.0 * y[self.j_at_ + k] * dt_ds;
+    for (std::size_t j = 0; j < self.decay_->modes() * N; ++j) dy[self.j_at_ + j] *= dt_ds;
   }
   return 0;
 }

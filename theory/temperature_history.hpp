@@ -8,7 +8,8 @@
 // Optional companions integrated with the same solver (only when asked for):
 //   reduced time       τ_k(t) = ∫₀ᵗ √(T_k/T_k(0)) dt'          (v1 Eq. 17, Fig. 1 t_s)
 //   diffusion integral I_k(t) = ∫₀ᵗ D_k dt'                     (v1 Eq. 21, long-time MSD = 6 I_k)
-//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − ν_k J  (physics-beyond.md §2; J = ⟨Δr·v⟩)
+//   VACF ODE           d⟨R²⟩/dt = 2J,  dJ/dt = 3T_k/m_k − ν_k J  (physics-beyond.md §2; J = ⟨Δr·v⟩), or
+//                      more modes per species if the decay model has them (VelocityDecay::modes)
 // The cooling rates ξ_k and the velocity decay rate ν_k are pluggable (cooling_model.hpp); by
 // default ξ_k of v1 (A2) and ν_k = τ_v,k⁻¹ + ξ_k/2 (physics.md §3: the tagged velocity decays at the
 // momentum-relaxation rate, not at τ_v,k⁻¹). A cooling model may bring extra unknowns (the relaxing

@@ -35,8 +35,8 @@ class PaperLevel final : public TheoryLevel {
 
 // The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
-// ODE (transients included) with the tagged velocity decaying at the rate that gives the second-Sonine
-// D_k in the diffusive regime (ν_eff = ξ/2 + (ν − ξ/2) D[1]/D[2], physics-beyond §3); settled states from
+// ODE (transients included) with two Sonine modes per species (SecondSonineDecay: the first-Sonine decay
+// from the start, the second-Sonine D_k in the diffusive regime, physics-beyond §3); settled states from
 // the first-Sonine HCS. The pair integrals follow the restitution law (sonine_pair_terms.hpp): closed forms
 // at constant ε, a quadrature over the normal impact speed for a viscoelastic law, whose cumulants then
 // follow a drifting quasi-state (ε → 1 as the gas cools) and which has no HCS: its settled ratios stay the
