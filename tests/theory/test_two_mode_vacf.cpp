@@ -1,6 +1,8 @@
 // The kinetic level's velocity correlation with two Sonine modes (SecondSonineDecay, issue 12): its settled
 // MSD slope is 6 D_k[2] of physics-beyond §3, its short-time decay is the first-Sonine ν_k (not the
 // long-time ν_eff of the former one-mode closure), and an elastic gas settles at Chapman–Cowling's 59/58 D[1].
+// Mutants run against these (2026-12-02): Q decaying at ν_eff with P dropped (the former closure) fails the
+// first two; C₁₀'s sign flipped in dP/dt fails the first and the third; the 5ζ/2 term dropped fails the first.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
