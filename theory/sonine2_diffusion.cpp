@@ -83,8 +83,8 @@ void SecondSonineDecay::rates(const double* T, const double*, double* nu) const 
   for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T);
 }
 
-void SecondSonineDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q,
-                                          double* dQ, double*) const {
+void SecondSonineDecay::correlation_rates(const CollisionRates&, const double* T, const double*, const double* Q, double* dQ,
+                                          double*) const {
   const std::size_t N = rates_.size();
   for (std::size_t k = 0; k < N; ++k) {
     const SonineTracerSums s = sonine2_tracer_sums(rates_, *terms_, k, T);
@@ -95,7 +95,8 @@ void SecondSonineDecay::correlation_rates(const CollisionRates&, const double* T
       continue;
     }
     dQ[k] = source - (2.0 / 3.0) * s.C.C00 * q - (4.0 / 15.0) * s.C.C01 * p;
-    dQ[N + k] = xi[k] * p - (2.5 * xi[k] + (2.0 / 3.0) * s.C.C10) * q - (4.0 / 15.0) * s.C.C11 * p;
+    // The mode's scaling terms with ξ_k of the same Maxwellian sums as C_pq (see the header).
+    dQ[N + k] = s.xi * p - (2.5 * s.xi + (2.0 / 3.0) * s.C.C10) * q - (4.0 / 15.0) * s.C.C11 * p;
   }
 }
 

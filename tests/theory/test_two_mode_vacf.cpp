@@ -2,7 +2,8 @@
 // MSD slope is 6 D_k[2] of physics-beyond §3, its short-time decay is the first-Sonine ν_k (not the
 // long-time ν_eff of the former one-mode closure), and an elastic gas settles at Chapman–Cowling's 59/58 D[1].
 // Mutants run against these (2026-12-02): Q decaying at ν_eff with P dropped (the former closure) fails the
-// first two; C₁₀'s sign flipped in dP/dt fails the first and the third; the 5ζ/2 term dropped fails the first.
+// first two; C₁₀'s sign flipped in dP/dt fails the first and the third; the 5ζ/2 term dropped fails the first; the level's Sonine ζ_k in place of ξ_k in dP/dt fails
+// the first (slope −2.0e-3, −1.5e-3 off).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -46,13 +47,18 @@ TEST_CASE("two-mode VACF: the settled MSD slope of the bo1-fig02 binary is 6 D_k
   h.states(t, z.data());
   h.cooling_model().rates(T.data(), z.data(), xi.data(), dz.data());  // ζ_k = −d ln T_k/dt of the level
   for (std::size_t k = 0; k < N; ++k) {
-    // D_k[2] with the ζ the ODE cools with (the common HCS ζ: the ξ_k agree once settled).
-    const SonineCollisionIntegrals C = sonine2_collision_integrals(r, k, T.data());
-    const double D1 = 1.5 * T[k] / r.mixture()[k].mass / (C.C00 - 0.75 * xi[k]);
-    const double f = sonine2_factor(C, xi[k]);
-    const double ratio = slope(h, k, t, 1e-3) / (6 * D1 * f);
-    std::printf("bo1-fig02 settled, species %zu: slope/(6 D[2]) - 1 = %.2e (D[2]/D[1] = %.5f; xi_1/xi_2 - 1 = %.1e)\n", k + 1,
-                ratio - 1, f, xi[0] / xi[1] - 1);
+    // D_k[2] of §3 with T_k cooling at the level's ζ (the common HCS ζ: the ξ_k agree once settled) and
+    // the mode's scaling terms at the Maxwellian ξ_M of the same sums as C_pq (sonine2_diffusion.hpp).
+    const SonineTracerSums s = sonine2_tracer_sums(r, k, T.data());
+    const SonineCollisionIntegrals& C = s.C;
+    const double zeta = xi[k], D1 = 1.5 * T[k] / r.mixture()[k].mass / (C.C00 - 0.75 * zeta);
+    const double D2 = 1.5 * T[k] / r.mixture()[k].mass /
+                      (C.C00 - 0.75 * zeta - C.C01 * (C.C10 + 3.75 * s.xi) / (C.C11 - 3.75 * s.xi - 1.875 * zeta));
+    const double f = D2 / D1;
+    const double ratio = slope(h, k, t, 1e-3) / (6 * D2);
+    std::printf("bo1-fig02 settled, species %zu: slope/(6 D[2]) - 1 = %.2e (D[2]/D[1] = %.5f; xi_1/xi_2 - 1 = %.1e; "
+                "Sonine/Maxwell zeta - 1 = %.1e)\n",
+                k + 1, ratio - 1, f, xi[0] / xi[1] - 1, zeta / s.xi - 1);
     // h²/3 = 3e-7 of the difference, the settling of the ratios (exponential in ln t, long done at
     // t = 1e6 ~ 1e5 Haff times) and CVODE's rtol 1e-11 over ΔM/M ~ 1e-4: bound 1e-6. The one-mode
     // first-Sonine answer (P dropped) is off by |f − 1| = 1.3–8% (printed).
