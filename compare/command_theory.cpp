@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "commands.hpp"
+#include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
@@ -20,6 +21,7 @@ std::function<int()> add_theory_command(CLI::App& app) {
   return [scene, out]() {
     // Everything is read and checked before anything is written.
     const model::Scene s = model::load_scene(*scene);
+    interrupts::require_writable_folder(*out);  // exit 2 naming --out, not a filesystem error after the solve
     const theory::TheoryResult r = theory::run_theory(s);
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();

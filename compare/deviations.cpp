@@ -35,14 +35,19 @@ std::string label(const model::CompareQuantity& q) {
 }
 
 std::string tolerance_text(const model::CompareQuantity& q) {
+  // Δp, Δm, Δs: the correction over the paper level, the Maxwellian value, the first-Sonine D; Δps: the larger.
+  std::string delta = "Δ";
+  for (const std::string& lower : q.correction_from) delta += lower.front();
   const std::string rel = q.correction_from.empty() ? fmt::format("{:g}", q.relative)
-                        : q.relative > 0 ? fmt::format("{:g}+Δ{}", q.relative, q.correction_from.substr(0, 1)) : "Δ" + q.correction_from.substr(0, 1);
+                        : q.relative > 0 ? fmt::format("{:g}+{}", q.relative, delta) : delta;
   return rel + fmt::format("+{:g}σ", q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
 }
 
 nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
   nlohmann::ordered_json j = {{"relative", q.relative}, {"z", q.z}};
-  if (!q.correction_from.empty()) j["correction_from"] = q.correction_from;
+  // One lower level as a string (as before), several as an array.
+  if (q.correction_from.size() == 1) j["correction_from"] = q.correction_from.front();
+  if (q.correction_from.size() > 1) j["correction_from"] = q.correction_from;
   if (q.absolute > 0) j["absolute"] = q.absolute;
   return j;
 }
@@ -59,7 +64,8 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
     const std::string& predicted = q.theory.empty() ? q.name : q.theory;
     const int a = theory.column(predicted), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
     const int paper = theory.column(predicted + "_paper");
-    const int lower = q.correction_from.empty() ? -1 : theory.column(predicted + "_" + q.correction_from);
+    std::vector<int> lower;
+    for (const std::string& from : q.correction_from) lower.push_back(theory.column(predicted + "_" + from));
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];
@@ -74,9 +80,11 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
-      // The last correction's size, where the scene names the lower level it came from; a lower level
-      // the theory table does not hold at this point counts as no correction.
-      const double correction = lower >= 0 && std::isfinite(row[lower]) && d.theory != 0.0 ? std::abs(d.theory - row[lower]) / std::abs(d.theory) : 0.0;
+      // The last correction's size, where the scene names the lower level it came from (the largest, if it
+      // names several); a lower level the theory table does not hold at this point counts as no correction.
+      double correction = 0.0;
+      for (int l : lower)
+        if (l >= 0 && std::isfinite(row[l]) && d.theory != 0.0) correction = std::max(correction, std::abs(d.theory - row[l]) / std::abs(d.theory));
       d.model_error = q.relative + correction;
       d.pass = std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute;
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;

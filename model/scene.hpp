@@ -79,8 +79,10 @@ struct CompareQuantity {
   std::string theory;           // the theory column that predicts the DSMC column `name` (default: name)
   // Model error computed point by point as the size of the judged theory's last correction:
   // |theory − theory_<correction_from>| / |theory| ("paper": the paper level; "maxwell": the
-  // Maxwellian column of a Sonine quantity), added to `relative`. Empty: `relative` alone.
-  std::string correction_from;
+  // Maxwellian column of a Sonine quantity; "sonine1": the kinetic level with first-Sonine D, i.e. the
+  // size of its second-Sonine correction), added to `relative`. Several: the largest of them at each point
+  // (the last corrections of independent truncations). Empty: `relative` alone.
+  std::vector<std::string> correction_from;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include "toml_fields.hpp"
 
 #include <cmath>
@@ -108,6 +109,25 @@ std::string TomlFields::choice(const std::string& key, const std::vector<std::st
   for (const auto& a : allowed)
     if (a == v) return v;
   fail(key, "unknown value \"" + v + "\"", list);
+}
+
+std::vector<std::string> TomlFields::choices(const std::string& key, const std::vector<std::string>& allowed) {
+  if (!has(key)) return {};
+  if (!table_.get(key)->is_array()) return {choice(key, allowed)};
+  std::string list;
+  for (const auto& a : allowed) list += (list.empty() ? "\"" : ", \"") + a + "\"";
+  list = "one of " + list + ", or a non-empty array of distinct ones";
+  const toml::array& arr = *node(key)->as_array();
+  if (arr.empty()) fail(key, "empty array", list);
+  std::vector<std::string> out;
+  for (const toml::node& e : arr) {
+    if (!e.is_string()) fail_at(e, key, "expected strings", list);
+    const std::string v = e.value<std::string>().value();
+    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end()) fail_at(e, key, "unknown value \"" + v + "\"", list);
+    if (std::find(out.begin(), out.end(), v) != out.end()) fail_at(e, key, "\"" + v + "\" given twice", list);
+    out.push_back(v);
+  }
+  return out;
 }
 
 std::vector<double> TomlFields::numbers(const std::string& key, double lo, double hi) {

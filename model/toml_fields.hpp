@@ -24,6 +24,8 @@ class TomlFields {
   std::string text(const std::string& key, std::optional<std::string> fallback = std::nullopt);
   std::string choice(const std::string& key, const std::vector<std::string>& allowed,
                      std::optional<std::string> fallback = std::nullopt);
+  // One allowed string, or a non-empty array of distinct allowed strings; absent: empty.
+  std::vector<std::string> choices(const std::string& key, const std::vector<std::string>& allowed);
   std::vector<double> numbers(const std::string& key, double lo, double hi);  // non-empty array
   // The raw node, marked as read (nullptr when absent).
   const toml::node* node(const std::string& key);

@@ -1,5 +1,6 @@
 #include "scene_theory.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -243,14 +244,20 @@ Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& 
   return time_table(s, s.theory.tracer ? tracer_samples(s, rates, level) : history_samples(s, rates, level, stats));
 }
 
-// Appends the value columns of `paper` (same rows) as `<column>_paper`.
-void append_paper_columns(Table& t, const Table& paper) {
-  for (std::size_t c = 1; c < paper.columns.size(); ++c) {
-    const std::string& name = paper.columns[c];
+// Appends the value columns of a lower level's table (same rows) as `<column>_<suffix>`.
+void append_level_columns(Table& t, const Table& lower, const std::string& suffix) {
+  for (std::size_t c = 1; c < lower.columns.size(); ++c) {
+    const std::string& name = lower.columns[c];
     if (name == "species" || name == "lag" || name.ends_with("_maxwell")) continue;
-    t.columns.push_back(name + "_paper");
-    for (std::size_t r = 0; r < t.rows.size(); ++r) t.rows[r].push_back(paper.rows[r][c]);
+    t.columns.push_back(name + "_" + suffix);
+    for (std::size_t r = 0; r < t.rows.size(); ++r) t.rows[r].push_back(lower.rows[r][c]);
   }
+}
+
+bool corrected_from(const model::Scene& s, const std::string& lower) {
+  return std::any_of(s.compare.begin(), s.compare.end(), [&](const model::CompareQuantity& q) {
+    return std::find(q.correction_from.begin(), q.correction_from.end(), lower) != q.correction_from.end();
+  });
 }
 
 }  // namespace
@@ -268,7 +275,11 @@ TheoryResult run_theory(const model::Scene& scene) {
   r.table = level_table(s, *level, r.stats);
   if (s.theory.level != "paper") {  // the papers' curves beside the judged level's
     SolverStats paper_stats;
-    append_paper_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats));
+    append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
+  }
+  if (s.theory.level == "kinetic" && corrected_from(s, "sonine1")) {  // its first-Sonine-D companion
+    SolverStats lower_stats;
+    append_level_columns(r.table, level_table(s, *make_theory_level("kinetic-sonine1"), lower_stats), "sonine1");
   }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -61,9 +61,13 @@ bool sonine_applies(const CollisionRates& rates) {
   return false;
 }
 
+// second_sonine = false: the same level with the first-Sonine D_k (one VACF mode at ν_k = τ_v,k⁻¹ + ζ_k/2,
+// D_k[1] settled) — "kinetic-sonine1", the lower order whose difference to the kinetic level is the size of
+// its last Sonine correction (a scene's correction_from = "sonine1").
 class KineticLevel final : public TheoryLevel {
  public:
-  const char* name() const override { return "kinetic"; }
+  explicit KineticLevel(bool second_sonine) : second_sonine_(second_sonine) {}
+  const char* name() const override { return second_sonine_ ? "kinetic" : "kinetic-sonine1"; }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return;
@@ -71,11 +75,11 @@ class KineticLevel final : public TheoryLevel {
     // per pair and right-hand side.
     const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(rates.law());
     opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::vector<double>{}, terms);
-    opt.decay = std::make_shared<SecondSonineDecay>(rates, terms);
+    if (second_sonine_) opt.decay = std::make_shared<SecondSonineDecay>(rates, terms);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
-    if (!sonine_applies(rates)) return d;
+    if (!sonine_applies(rates) || !second_sonine_) return d;
     // Second-Sonine D_k (physics-beyond §3); where the expansion has no diffusive solution (NaN, a
     // large rare grain near the Santos–Dufty edge) the first-Sonine D stays.
     for (std::size_t k = 0; k < T.size(); ++k) {
@@ -102,15 +106,19 @@ class KineticLevel final : public TheoryLevel {
     if (!sonine_applies(rates) || rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
   }
-  TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates); }
+  TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, second_sonine_}); }
+
+ private:
+  bool second_sonine_;
 };
 
 }  // namespace
 
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "paper") return std::make_unique<PaperLevel>();
-  if (name == "kinetic") return std::make_unique<KineticLevel>();
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic)");
+  if (name == "kinetic") return std::make_unique<KineticLevel>(true);
+  if (name == "kinetic-sonine1") return std::make_unique<KineticLevel>(false);
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1)");
 }
 
 }  // namespace granmix::theory

@@ -32,6 +32,12 @@ std::string replace(std::string s, const std::string& from, const std::string& t
   return s.replace(at, from.size(), to);
 }
 
+// The good scene judged against DSMC, its msd's model error taken from `lower` (TOML text).
+std::string judged(const std::string& lower) {
+  return good + "[dsmc]\nquick = { particles = 100, replicas = 8 }\npaper = { particles = 100, replicas = 8 }\n[compare]\n" +
+         "quantities = [{ name = \"msd\", correction_from = " + lower + ", relative = 0, why = \"w\" }]\n";
+}
+
 struct Case {
   const char* what;
   std::string text;
@@ -74,6 +80,11 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
       {"both mixture forms", replace(good, "[collisions]", "power_law = { n1 = 0.1, theta = 3, n1_particles = 10 }\n[collisions]"),
        "mixture.species: give exactly one of"},
       {"mg time unit typo", replace(good, "points = 5", "points = 5\nunit = \"seconds\""), ":12: time.unit: unknown value \"seconds\""},
+      {"unknown lower level", judged("\"sonine2\""), ":20: compare.quantities[1].correction_from: unknown value \"sonine2\""},
+      {"lower level twice", judged("[\"paper\", \"paper\"]"), ":20: compare.quantities[1].correction_from: \"paper\" given twice"},
+      {"no lower levels", judged("[]"), "compare.quantities[1].correction_from: empty array"},
+      {"lower level of another level", judged("[\"paper\", \"sonine1\"]"),
+       "compare.correction_from: \"paper\" is a lower level of the kinetic level, but theory.level is \"paper\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");
