@@ -225,13 +225,19 @@ void rescale_time_columns(model::Table& table, double factor) {
   }
 }
 
-std::vector<std::vector<double>> scene_contact_values(const model::Scene& s) {
-  return s.enskog ? model::enskog_contact_values(s.mixture) : model::dilute_contact_values(s.mixture.size());
+namespace {
+
+// The scene's choice of χ_ij (Enskog or dilute) for a mixture of it (a sweep point's may differ).
+std::vector<std::vector<double>> contact_values_of(const model::Scene& s, const model::Mixture& mix) {
+  return s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
 }
 
+}  // namespace
+
+std::vector<std::vector<double>> scene_contact_values(const model::Scene& s) { return contact_values_of(s, s.mixture); }
+
 CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, const model::Restitution& law) {
-  auto chi = s.enskog ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
-  return CollisionRates(mix, law, std::move(chi), moment_method(s.theory.moments));
+  return CollisionRates(mix, law, contact_values_of(s, mix), moment_method(s.theory.moments));
 }
 
 namespace {
