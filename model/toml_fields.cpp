@@ -1,6 +1,6 @@
-#include <algorithm>
 #include "toml_fields.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
