@@ -70,8 +70,9 @@ double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePair
 // T_k: the kinematic ζ_k with a₂ but C_pq without it is inconsistent at O(a₂) and, measured against DSMC
 // (quick, seed 1, max rel): bo1-fig05 D ratio at ε = 0.2 7.7% (ξ_k here: 2.9%; one mode: 2.2%), bo1-fig02
 // light MSD 4.1% (3.1%), bo1-fig06 light MSD 6.7% (3.8%). Settled, D_k = (3T_k/2m_k)/[C₀₀ − ¾ζ_k −
-// C₀₁(C₁₀ + 15ξ_k/4)/(C₁₁ − 15ξ_k/4 − 15ζ_k/8)]: D_k[2] of physics-beyond §3 where ζ_k = ξ_k. From a Maxwellian start the velocity first decays at the first-Sonine
-// ν_k = (2/3)C₀₀ (P builds up over ~1/ν_k), and in the settled HCS the MSD slope is 6D_k[2]: the one-mode
+// C₀₁(C₁₀ + 15ξ_k/4)/(C₁₁ − 15ξ_k/4 − 15ζ_k/8)]: D_k[2] of physics-beyond §3 where ζ_k = ξ_k.
+// From a Maxwellian start the velocity first decays at the first-Sonine ν_k = (2/3)C₀₀ (P builds up
+// over ~1/ν_k), and in the settled HCS the MSD slope is 6D_k[2]: the one-mode
 // closure with ν_eff decayed at the long-time rate from t = 0 and lost the velocity memory too early
 // (heavy species of bo1-fig06/-fig01: MSD up to 0.8% above DSMC at intermediate t, light ones 3–9% early).
 // Where the second-Sonine problem has no diffusive solution (sonine2_factor NaN, a large rare grain near

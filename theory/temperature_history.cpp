@@ -75,9 +75,10 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
     const double v = 3.0 * T0_[k] / rates_.mixture()[k].mass;  // ⟨v_k²⟩(0)
     if (opt_.reduced_time) atol[tau_at_ + k] = opt_.rtol * t1;
     if (opt_.diffusion_integral) atol[int_at_ + k] = opt_.rtol * t1 * rates_.diffusion(k, T0_.data());
-    if (opt_.vacf) atol[r2_at_ + k] = opt_.rtol * v * t1 * t1;
-    if (opt_.vacf)
+    if (opt_.vacf) {
+      atol[r2_at_ + k] = opt_.rtol * v * t1 * t1;
       for (std::size_t j = 0; j < decay_->modes(); ++j) atol[j_at_ + j * N_ + k] = opt_.rtol * v * t1;  // modes ~ J
+    }
   }
   for (std::size_t j = 0; j < nz_; ++j) y[z_at_ + j] = z0[j], atol[z_at_ + j] = z_atol[j];
   y0_.assign(y, y + n_);
