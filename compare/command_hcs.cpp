@@ -3,7 +3,9 @@
 //   --mu μ --delta δ --w w --alpha α [--alpha11 --alpha22 --alpha12] [--nstar N] [--json]
 // Fields: T_ratio_maxwell (v1 Eq. A2), T_ratio_sonine and c (first-Sonine, MG App. A, any number of
 // species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), D_sonine2_factor = D_k[2]/D_k[1]
-// (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3), tau0 = 2/ξ
+// (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3) and
+// D_sonine_factors = [D_k[1]/D_k[1], …, D_k[5]/D_k[1]] (the Sonine orders 1–5, up to the first without a
+// diffusive solution; the kinetic level uses order 4), tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
@@ -83,7 +85,15 @@ int run(const HcsOptions& o) {
   const bool has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
   // NaN where the second-Sonine tracer problem has no diffusive solution (sonine2_diffusion.hpp).
   std::vector<double> sonine2(mix.size());
-  for (std::size_t k = 0; k < mix.size(); ++k) sonine2[k] = theory::sonine2_factor(rates, k, d.T.data());
+  std::vector<std::vector<double>> orders(mix.size());
+  for (std::size_t k = 0; k < mix.size(); ++k) {
+    sonine2[k] = theory::sonine_factor(rates, k, d.T.data(), 2);
+    for (std::size_t M = 1; M <= theory::max_sonine_modes; ++M) {
+      const double f = theory::sonine_factor(rates, k, d.T.data(), M);
+      if (!std::isfinite(f)) break;
+      orders[k].push_back(f);
+    }
+  }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
   const double eps_one = listed ? o.eps : o.alpha;
   std::optional<theory::SonineTruncation> trunc;
@@ -99,6 +109,7 @@ int run(const HcsOptions& o) {
       // 2β_k/ζ* is infinite for an elastic gas (ζ* = 0, no exponential tail): omitted, never null.
       if (std::isfinite(sonine.tail_exponent(k))) s["tail_exponent"] = sonine.tail_exponent(k);
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
+      if (!orders[k].empty()) s["D_sonine_factors"] = orders[k];
       if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       j["species"].push_back(s);
     }

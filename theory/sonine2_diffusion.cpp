@@ -1,102 +1,170 @@
 #include "sonine2_diffusion.hpp"
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
+#include "sonine_cpq_table.hpp"
 #include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
-// Closed forms of C_pq = ⟨S_q(c²) ∫dσ̂ Θ(g·σ̂)(g·σ̂) c·[c S_p(c²) − c′ S_p(c′²)]⟩ for one pair,
-// derived (sympy, exact polynomial integration) by writing v = a g + G with g = v − w and
-// G ⊥ g Gaussian, a = A_k/V, V = A_k + A_i, A = T/m; then the hemisphere around ĝ, the Gaussian
-// moments of G and the Maxwell moments of |g| are elementary. With β = μ_ik(1+ε_ki) and
-// P = n_i σ_ki² χ_ki √(2πV):
-//   C₀₀ = 2βP                                   (= (3/2)ν_ki, physics-beyond §1)
-//   C₀₁ = −aβP
-//   C₁₀ = −βP (3a² − 9aβ + 10a + 4β² − 5β)/a
-//   C₁₁ = βP (30 − 33β + 12β² + 22a − 9aβ − 3a²)/2
-// Checks (tests/theory/test_sonine2_diffusion.cpp): an independent quadrature over both
-// Maxwellians and σ̂; elastic equal temperatures: C₀₁ = C₁₀ (self-adjoint operator); elastic
-// Lorentz gas (a = 1, β = 2): C₀₁/C₀₀ = −1/2, C₁₁/C₀₀ = 13/4, hence D[2]/D[1] = 13/12.
-SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai) {
-  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
-  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
-  return {2.0 * bP, -a * bP, -bP * (3.0 * a * a - 9.0 * a * b + 10.0 * a + 4.0 * b * b - 5.0 * b) / a,
-          0.5 * bP * (30.0 - 33.0 * b + 12.0 * b * b + 22.0 * a - 9.0 * a * b - 3.0 * a * a)};
+namespace {
+
+constexpr std::size_t MM = max_sonine_modes;
+
+// N_p = (2/√π)Γ(p + 5/2)/p! = N_{p−1}(p + 3/2)/p, N₀ = 3/2; and since x L_p^(α)′ = p L_p − (p + α)L_{p−1},
+// S_p + 2x S_p′ = (2p + 1)S_p − (2p + 3)S_{p−1}: M_pp = (2p + 1)N_p, M_{p,p−1} = −(2p + 3)N_{p−1}, else 0.
+struct ModeMatrices {
+  std::array<double, MM> norm{};
+  std::array<double, MM * MM> scaling{};
+  ModeMatrices() {
+    norm[0] = 1.5;
+    for (std::size_t p = 1; p < MM; ++p) norm[p] = norm[p - 1] * (double(p) + 1.5) / double(p);
+    for (std::size_t p = 0; p < MM; ++p) {
+      scaling[p * MM + p] = (2.0 * double(p) + 1.0) * norm[p];
+      if (p > 0) scaling[p * MM + p - 1] = -(2.0 * double(p) + 3.0) * norm[p - 1];
+    }
+  }
+};
+
+const ModeMatrices& mode_matrices() {
+  static const ModeMatrices m;
+  return m;
 }
 
-SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T) {
+using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, int(MM), int(MM)>;
+
+}  // namespace
+
+double sonine_mode_norm(std::size_t p) { return mode_matrices().norm.at(p); }
+double sonine_scaling_matrix(std::size_t p, std::size_t q) { return mode_matrices().scaling.at(p * MM + q); }
+
+// The closed forms (sonine_cpq_table.hpp): C_pq = β P Σ coefficient a^ia β^ib, a = A_k/V, V = A_k + A_i,
+// A = T/m, P = n_i σ_ki² χ_ki √(2πV). For p, q < 2: C₀₀ = 2βP (= (3/2)ν_ki, physics-beyond §1), C₀₁ = −aβP,
+// C₁₀ = −βP(3a² − 9aβ + 10a + 4β² − 5β)/a, C₁₁ = βP(30 − 33β + 12β² + 22a − 9aβ − 3a²)/2.
+// Checks (tests/theory/test_sonine2_diffusion.cpp, test_sonine_modes.cpp): an independent quadrature over both
+// Maxwellians and σ̂; elastic equal temperatures: C symmetric after the norms (self-adjoint operator);
+// elastic Lorentz gas (a = 1, β = 2): D[2]/D[1] = 13/12.
+SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai, std::size_t modes) {
+  if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
+  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
+  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
+  std::array<double, 3 * MM> apow{}, bpow{};  // a^(j − MM) (the table's ia is −4 … 8), β^j (ib ≤ 8)
+  apow[MM] = 1.0, bpow[0] = 1.0;
+  for (std::size_t j = MM + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
+  for (std::size_t j = MM; j-- > 0;) apow[j] = apow[j + 1] / a;
+  for (std::size_t j = 1; j < bpow.size(); ++j) bpow[j] = bpow[j - 1] * b;
+  SonineCollisionIntegrals C;
+  C.modes = modes;
+  for (const SonineCpqTerm& t : sonine_cpq_terms) {
+    if (std::size_t(t.p) >= modes) break;  // rows sorted by p
+    if (std::size_t(t.q) >= modes) continue;
+    C(t.p, t.q) += t.coefficient * apow[MM + t.ia] * bpow[t.ib];
+  }
+  for (double& x : C.c) x *= bP;
+  return C;
+}
+
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
+                                     std::size_t modes) {
   const model::Mixture& mix = rates.mixture();
   SonineTracerSums sum;
+  sum.C.modes = modes;
   for (std::size_t i = 0; i < mix.size(); ++i) {
     const double s = mix.sigma(k, i);
-    const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i]);
-    sum.C.C00 += p.C.C00, sum.C.C01 += p.C.C01, sum.C.C10 += p.C.C10, sum.C.C11 += p.C.C11;
+    const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], modes);
+    sum.C.add(p.C);
     sum.xi += p.xi;
   }
   return sum;
 }
 
-SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T) {
-  return sonine2_tracer_sums(rates, *make_sonine_pair_terms(rates.law()), k, T);
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes) {
+  return sonine2_tracer_sums(rates, *make_sonine_pair_terms(rates.law()), k, T, modes);
 }
 
-SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T) {
-  return sonine2_tracer_sums(rates, k, T).C;
+SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes) {
+  return sonine2_tracer_sums(rates, k, T, modes).C;
 }
 
-double sonine2_factor(const SonineCollisionIntegrals& C, double zeta) {
-  // D[2]/D[1] = (C₀₀ − ¾ζ) / [C₀₀ − ¾ζ − C₀₁(C₁₀ + 15ζ/4)/(C₁₁ − 45ζ/8)] (physics-beyond §3).
-  const double first = C.C00 - 0.75 * zeta, c11 = C.C11 - 5.625 * zeta;
-  const double second = first - C.C01 * (C.C10 + 3.75 * zeta) / c11;
-  if (!(first > 0.0 && c11 > 0.0 && second > 0.0)) return std::numeric_limits<double>::quiet_NaN();
-  return first / second;
+double sonine_factor(const SonineCollisionIntegrals& C, double zeta) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::size_t M = C.modes;
+  const double first = C(0, 0) - 0.75 * zeta;  // ∝ 1/D[1]
+  if (!(first > 0.0)) return nan;
+  if (M == 1) return 1.0;
+  Small A(M, M), AN(M, M);
+  for (std::size_t p = 0; p < M; ++p)
+    for (std::size_t q = 0; q < M; ++q) {
+      A(p, q) = C(p, q) - 0.5 * zeta * sonine_scaling_matrix(p, q);
+      AN(p, q) = A(p, q) / sonine_mode_norm(q);
+    }
+  // The modes relax (the quasi-steady state the diffusive D is) only if every eigenvalue of A N⁻¹ has a
+  // positive real part.
+  const Eigen::EigenSolver<Small> es(AN, false);
+  if (es.info() != Eigen::Success) return nan;
+  for (Eigen::Index j = 0; j < es.eigenvalues().size(); ++j)
+    if (!(es.eigenvalues()[j].real() > 0.0)) return nan;
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, int(MM), 1> e0 = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, int(MM), 1>::Zero(M);
+  e0[0] = 1.0;
+  const double inv00 = A.partialPivLu().solve(e0)[0];  // (A⁻¹)₀₀ ∝ D[M]
+  if (!(inv00 > 0.0) || !std::isfinite(inv00)) return nan;
+  return inv00 * first;
 }
 
-double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* T) {
+double sonine_factor(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes) {
   // ζ = ξ_k: the tagged species' temperature T_k sets the scaling of its tracer problem, and T_k
   // decays at ξ_k (equal to the common ζ once settled).
-  const SonineTracerSums s = sonine2_tracer_sums(rates, k, T);
-  return sonine2_factor(s.C, s.xi);
+  const SonineTracerSums s = sonine2_tracer_sums(rates, k, T, modes);
+  return sonine_factor(s.C, s.xi);
 }
 
-double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T) {
-  const SonineTracerSums s = sonine2_tracer_sums(rates, terms, k, T);
-  const double factor = sonine2_factor(s.C, s.xi);
+double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
+                                   std::size_t modes) {
+  const SonineTracerSums s = sonine2_tracer_sums(rates, terms, k, T, modes);
+  const double factor = sonine_factor(s.C, s.xi);
   // τ_v,k⁻¹ = ν_k − ξ_k/2 (physics-beyond §1; (2/3)C₀₀ − ξ_k/2 of these sums to 1e-12, tested) taken from the
   // rates' own v1 (A1)/(A3), the paper level's: one implementation of τ_v for both levels, so that an error
-  // in it moves the judged curves too. No second-Sonine solution: the first-Sonine ν_k.
+  // in it moves the judged curves too. No diffusive solution: the first-Sonine ν_k.
   const double inv_tau = rates.inv_tau_v_species(k, T);
   return 0.5 * s.xi + inv_tau / (std::isfinite(factor) ? factor : 1.0);
 }
 
-double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T) {
-  return kinetic_velocity_decay_rate(rates, *make_sonine_pair_terms(rates.law()), k, T);
+double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes) {
+  return kinetic_velocity_decay_rate(rates, *make_sonine_pair_terms(rates.law()), k, T, modes);
 }
 
-SecondSonineDecay::SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms)
-    : rates_(rates), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {}
-
-void SecondSonineDecay::rates(const double* T, const double*, double* nu) const {
-  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T);
+SonineDecay::SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms)
+    : rates_(rates), modes_(modes), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {
+  if (modes < 2 || modes > MM) throw std::invalid_argument("SonineDecay: modes must be 2 to 5");
 }
 
-void SecondSonineDecay::correlation_rates(const CollisionRates&, const double* T, const double*, const double* Q, double* dQ,
-                                          double*) const {
-  const std::size_t N = rates_.size();
+void SonineDecay::rates(const double* T, const double*, double* nu) const {
+  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T, modes_);
+}
+
+void SonineDecay::correlation_rates(const CollisionRates&, const double* T, const double*, const double* Q, double* dQ, double*) const {
+  const std::size_t N = rates_.size(), M = modes_;
   for (std::size_t k = 0; k < N; ++k) {
-    const SonineTracerSums s = sonine2_tracer_sums(rates_, *terms_, k, T);
-    const double q = Q[k], p = Q[N + k], source = 3.0 * T[k] / rates_.mixture()[k].mass;
-    if (!std::isfinite(sonine2_factor(s.C, s.xi))) {  // no diffusive second-Sonine solution: first-Sonine ν_k
+    const SonineTracerSums s = sonine2_tracer_sums(rates_, *terms_, k, T, M);
+    if (!std::isfinite(sonine_factor(s.C, s.xi))) {  // no diffusive solution: first-Sonine ν_k, the other modes decoupled
       const double nu1 = 0.5 * s.xi + rates_.inv_tau_v_species(k, T);
-      dQ[k] = source - nu1 * q, dQ[N + k] = -nu1 * p;
+      dQ[k] = 3.0 * T[k] / rates_.mixture()[k].mass - nu1 * Q[k];
+      for (std::size_t p = 1; p < M; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
       continue;
     }
-    dQ[k] = source - (2.0 / 3.0) * s.C.C00 * q - (4.0 / 15.0) * s.C.C01 * p;
-    // The mode's scaling terms with ξ_k of the same Maxwellian sums as C_pq (see the header).
-    dQ[N + k] = s.xi * p - (2.5 * s.xi + (2.0 / 3.0) * s.C.C10) * q - (4.0 / 15.0) * s.C.C11 * p;
+    std::array<double, MM> b{};
+    for (std::size_t q = 0; q < M; ++q) b[q] = Q[q * N + k] / sonine_mode_norm(q);
+    for (std::size_t p = 0; p < M; ++p) {
+      // The scaling terms with ξ_k of the same Maxwellian sums as C_pq (see the header).
+      double d = (p == 0 ? 3.0 * T[k] / rates_.mixture()[k].mass : 0.0) - 0.5 * s.xi * Q[p * N + k];
+      for (std::size_t q = 0; q < M; ++q) d -= (s.C(p, q) - 0.5 * s.xi * sonine_scaling_matrix(p, q)) * b[q];
+      dQ[p * N + k] = d;
+    }
   }
 }
 

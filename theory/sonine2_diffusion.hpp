@@ -1,13 +1,19 @@
 #pragma once
 // Tracer diffusion of species k beyond the first Sonine approximation (physics-beyond.md §3;
-// Garzó & Montanero PRE 69, 021301 (2004) at a₂ = 0, any number of partner species).
+// Garzó & Montanero PRE 69, 021301 (2004) at a₂ = 0, any number of partner species), to any order M ≤ 5.
 // The Chapman–Enskog solution of the tracer (Boltzmann–Lorentz) problem is expanded in
-// c S_p(c²) f_M, c = V/√(2T_k/m_k), p = 0, 1. With the Maxwellian collision integrals C_pq
-// (test function c S_q, basis c S_p, closed forms in sonine2_diffusion.cpp) and the time-derivative
-// matrix of the scaled problem (−¾ζ, 0; 15ζ/4, −45ζ/8):
+// c S_p(c²) f_M, c = V/√(2T_k/m_k), S_p = L_p^(3/2), p < M (M "modes", the Sonine order of D). With the
+// Maxwellian collision integrals C_pq (test function c S_q, basis c S_p; closed forms at constant ε,
+// sonine_cpq_table.hpp), the norms N_p = ⟨c² S_p²⟩ = (2/√π)Γ(p + 5/2)/p! and the scaling matrix of the
+// time derivative, M_pq = ⟨c² S_q (S_p + 2c² S_p′)⟩ (M_pp = (2p + 1)N_p, M_{p,p−1} = −(2p + 3)N_{p−1}, else 0):
+//   D_k[M] = (3T_k/2m_k) (A⁻¹)₀₀,   A_pq = C_pq − (ζ/2) M_pq   (p, q < M)
 //   D_k[1] = (3T_k/2m_k) / (C₀₀ − ¾ζ) = T_k / (m_k(ν_k − ζ/2))
 //   D_k[2] = (3T_k/2m_k) / [C₀₀ − ¾ζ − C₀₁(C₁₀ + 15ζ/4)/(C₁₁ − 45ζ/8)]
-// Cost O(N) per species, no quadrature: meant for ODE right-hand sides.
+// Elastic Lorentz gas: D[M]/D[1] = 1, 13/12, 1.10677, 1.11654, 1.12152 for M = 1…5, towards 32/(9π) = 1.1318
+// from below; the 1:100 mixtures of v1 converge alternating (bo1-fig02, light species: 0.921, 0.940, 0.932,
+// 0.937; DSMC 0.941 ± 0.005), so |D[M] − D[M−1]| bounds the truncation there. The kinetic level uses
+// M = kinetic_sonine_order. Cost O(N M²) per species with the closed forms: meant for ODE right-hand sides.
+#include <array>
 #include <cstddef>
 #include <memory>
 
@@ -16,80 +22,96 @@
 
 namespace granmix::theory {
 
-// C_pq summed over the partners i of species k (rates in the units of the mixture).
+inline constexpr std::size_t max_sonine_modes = 5;
+// The Sonine order of the kinetic level's D (its VACF modes per species); kinetic-sonineN levels use N.
+inline constexpr std::size_t kinetic_sonine_order = 4;
+
+// C_pq summed over the partners i of species k (rates in the units of the mixture), p, q < modes.
 struct SonineCollisionIntegrals {
-  double C00 = 0.0, C01 = 0.0, C10 = 0.0, C11 = 0.0;
+  std::size_t modes = 0;
+  std::array<double, max_sonine_modes * max_sonine_modes> c{};
+  double operator()(std::size_t p, std::size_t q) const { return c[p * max_sonine_modes + q]; }
+  double& operator()(std::size_t p, std::size_t q) { return c[p * max_sonine_modes + q]; }
+  void add(const SonineCollisionIntegrals& o, double weight = 1.0) {
+    modes = o.modes;
+    for (std::size_t j = 0; j < c.size(); ++j) c[j] += weight * o.c[j];
+  }
 };
 
-// One pair (k, i): weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i+m_k), eps = ε_ki,
-// Ak = T_k/m_k, Ai = T_i/m_i.
-SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai);
+// N_p = ⟨c² S_p(c²)²⟩ over the Maxwellian, and M_pq of the scaled time derivative (above), p, q < 5.
+double sonine_mode_norm(std::size_t p);
+double sonine_scaling_matrix(std::size_t p, std::size_t q);
 
-// Σ_i over all partners of k at the temperatures T: closed forms at constant restitution, a quadrature over
-// the normal impact speed for a viscoelastic law (sonine_pair_terms.hpp, sonine_quadrature.hpp).
-SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T);
+// One pair (k, i) at constant restitution: weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i+m_k), eps = ε_ki,
+// Ak = T_k/m_k, Ai = T_i/m_i; p, q < modes (≤ max_sonine_modes).
+SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai, std::size_t modes = 2);
 
-// The same sums and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
-// ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], exactly 0 for ε = 1, T_i = T_k).
+// The sums over all partners of k and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
+// ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], exactly 0 for ε = 1, T_i = T_k): closed forms at
+// constant restitution, a quadrature over the normal impact speed for a viscoelastic law
+// (sonine_pair_terms.hpp, sonine_quadrature.hpp).
 struct SonineTracerSums {
   SonineCollisionIntegrals C;
   double xi = 0.0;
 };
-SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T);
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes = 2);
 class SoninePairTerms;
 // The same with the pair terms made once by the caller (make_sonine_pair_terms; for ODE right-hand sides).
-SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T);
+SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
+                                     std::size_t modes = 2);
+SonineCollisionIntegrals sonine2_collision_integrals(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes = 2);
 
-// D_k[2]/D_k[1] with the cooling rate zeta that scales the problem (the common ζ of the HCS).
+// D_k[M]/D_k[1], M = C.modes, with the cooling rate zeta that scales the problem (the common ζ of the HCS).
 // NaN where the truncated problem has no diffusive solution: C₀₀ − ¾ζ ≤ 0 (ν_k ≤ ζ/2, no first-Sonine
-// D either: the Santos–Dufty regime of a large rare grain) or a non-positive second-Sonine denominator.
-// Close to that edge (ν_k − ζ/2 ≪ ν_k) the factor grows without bound (2.06 for k = 40 of v1 Fig. 8 at
-// the settled ratios): there the Sonine expansion does not converge and the factor is no estimate.
-double sonine2_factor(const SonineCollisionIntegrals& C, double zeta);
+// D either: the Santos–Dufty regime of a large rare grain), a non-positive D[M], or modes that grow
+// instead of relaxing (an eigenvalue of A N⁻¹ with real part ≤ 0). Close to that edge (ν_k − ζ/2 ≪ ν_k)
+// the factor grows without bound (D[2]/D[1] = 2.06 for k = 40 of v1 Fig. 8 at the settled ratios): there the
+// Sonine expansion does not converge and the factor is no estimate.
+double sonine_factor(const SonineCollisionIntegrals& C, double zeta);
 
-// D_k[2]/D_k[1] at the temperatures T with ζ = ξ_k(T), the tagged species' own cooling rate: the
+// D_k[M]/D_k[1] at the temperatures T with ζ = ξ_k(T), the tagged species' own cooling rate: the
 // tracer problem is scaled with T_k, whose decay rate is ξ_k. In the settled HCS every ξ_k equals
-// the common ζ, so this is the Garzó–Montanero value; away from it, it is our choice (documented).
-double sonine2_factor(const CollisionRates& rates, std::size_t k, const double* T);
+// the common ζ, so this is the Garzó–Montanero value (M = 2); away from it, it is our choice (documented).
+double sonine_factor(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes);
 
-// Velocity-decay rate of species k at the kinetic level (physics-beyond.md §3, last line):
-//   ν_eff,k = ξ_k/2 + (ν_k − ξ_k/2)·D_k[1]/D_k[2],  ν_k − ξ_k/2 = τ_v,k⁻¹ (physics-beyond.md §1),
-// the one-mode VACF rate with the diffusive D_k[2] (SecondSonineDecay::rates; the mixture's VACF ODE
-// integrates two modes instead, below). Where the factor is NaN (see above) this is the
-// first-Sonine ν_k, the rate the MSD needs without a diffusive regime.
-double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T);
-double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T);
+// Velocity-decay rate of species k with D_k[M] (physics-beyond.md §3, last line):
+//   ν_eff,k = ξ_k/2 + (ν_k − ξ_k/2)·D_k[1]/D_k[M],  ν_k − ξ_k/2 = τ_v,k⁻¹ (physics-beyond.md §1),
+// the one-mode VACF rate with the same long-time D (SonineDecay::rates; the kinetic level's VACF ODE
+// integrates M modes instead, below). Where the factor is NaN (see above) this is the first-Sonine ν_k,
+// the rate the MSD needs without a diffusive regime.
+double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes);
+double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
+                                   std::size_t modes);
 
-// The kinetic level's velocity correlation: the VACF ODE with two Sonine modes per species (issue 12).
-// Q_k = ⟨Δr_k·v_k⟩ = v_k Y₀ and P_k = v_k Y₁, Y_p = ⟨c S_p(c²)·Δr_k⟩, v_k = √(2T_k/m_k), from the Galerkin
-// equations of §3 in time (dv_k/dt = −ζ_k v_k/2 taken out of Y_p):
-//   dQ/dt = 3T_k/m_k − (2/3)C₀₀ Q − (4/15)C₀₁ P
-//   dP/dt = ξ_k P − (5ξ_k/2 + (2/3)C₁₀) Q − (4/15)C₁₁ P,
-// Q = P = 0 at t = 0 for any start. ξ_k in dP/dt is the Maxwellian cooling rate of the same sums as C_pq
-// (a₂ = 0, like the collision integrals), not the level's Sonine ζ_k = −d ln T_k/dt, which Q feels through
-// T_k: the kinematic ζ_k with a₂ but C_pq without it is inconsistent at O(a₂) and, measured against DSMC
-// (quick, seed 1, max rel): bo1-fig05 D ratio at ε = 0.2 7.7% (ξ_k here: 2.9%; one mode: 2.2%), bo1-fig02
-// light MSD 4.1% (3.1%), bo1-fig06 light MSD 6.7% (3.8%). Settled, D_k = (3T_k/2m_k)/[C₀₀ − ¾ζ_k −
-// C₀₁(C₁₀ + 15ξ_k/4)/(C₁₁ − 15ξ_k/4 − 15ζ_k/8)]: D_k[2] of physics-beyond §3 where ζ_k = ξ_k.
-// From a Maxwellian start the velocity first decays at the first-Sonine ν_k = (2/3)C₀₀ (P builds up
-// over ~1/ν_k), and in the settled HCS the MSD slope is 6D_k[2]: the one-mode
-// closure with ν_eff decayed at the long-time rate from t = 0 and lost the velocity memory too early
+// The kinetic level's velocity correlation: the VACF ODE with M Sonine modes per species (issue 12).
+// Z_p,k = v_k Y_p, Y_p = ⟨c S_p(c²)·Δr_k⟩, v_k = √(2T_k/m_k), Z₀ = Q_k = ⟨Δr_k·v_k⟩, from the Galerkin
+// equations of §3 in time (dv_k/dt = −ξ_k v_k/2 taken out of Y_p; b_q = Z_q/N_q):
+//   dZ_p/dt = δ_p0 3T_k/m_k − Σ_q C_pq b_q + (ξ_k/2) Σ_q M_pq b_q − (ξ_k/2) Z_p,
+// i.e. for M = 2: dQ/dt = 3T_k/m_k − (2/3)C₀₀ Q − (4/15)C₀₁ P, dP/dt = ξ_k P − (5ξ_k/2 + (2/3)C₁₀) Q − (4/15)C₁₁ P;
+// Z = 0 at t = 0 for any start. ξ_k in the scaling terms is the Maxwellian cooling rate of the same sums as
+// C_pq (a₂ = 0, like the collision integrals), not the level's Sonine ζ_k = −d ln T_k/dt, which Q feels
+// through T_k: the kinematic ζ_k with a₂ but C_pq without it is inconsistent at O(a₂) and, measured against
+// DSMC (two modes, quick, seed 1, max rel): bo1-fig05 D ratio at ε = 0.2 7.7% (ξ_k here: 2.9%), bo1-fig02
+// light MSD 4.1% (3.1%), bo1-fig06 light MSD 6.7% (3.8%). Settled, the MSD slope is 6D_k[M] where ζ_k = ξ_k.
+// From a Maxwellian start the velocity first decays at the first-Sonine ν_k = (2/3)C₀₀ (the higher modes
+// build up over ~1/ν_k); a one-mode closure with the long-time rate lost the velocity memory too early
 // (heavy species of bo1-fig06/-fig01: MSD up to 0.8% above DSMC at intermediate t, light ones 3–9% early).
-// Where the second-Sonine problem has no diffusive solution (sonine2_factor NaN, a large rare grain near
-// the Santos–Dufty edge) species k keeps one mode at the first-Sonine ν_k (as the one-mode closure did) and
-// its P relaxes at ν_k, decoupled.
-class SecondSonineDecay final : public VelocityDecay {
+// Where the truncated problem has no diffusive solution (sonine_factor NaN, a large rare grain near the
+// Santos–Dufty edge) species k keeps one mode at the first-Sonine ν_k and its other modes relax at ν_k,
+// decoupled.
+class SonineDecay final : public VelocityDecay {
  public:
-  // terms: pair terms shared with the cooling closure (null: the law's own).
-  explicit SecondSonineDecay(const CollisionRates& rates, std::shared_ptr<const SoninePairTerms> terms = nullptr);
+  // terms: pair terms shared with the cooling closure (null: the law's own). modes: 2 … max_sonine_modes.
+  SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms = nullptr);
   // The one-mode equivalent ν_eff,k of kinetic_velocity_decay_rate (same long-time D).
   void rates(const double* T, const double*, double* nu) const override;
-  std::size_t modes() const override { return 2; }
+  std::size_t modes() const override { return modes_; }
   void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
                          double* nu) const override;
 
  private:
   const CollisionRates& rates_;
+  std::size_t modes_;
   std::shared_ptr<const SoninePairTerms> terms_;
 };
 

@@ -19,11 +19,12 @@ class ClosedFormTerms final : public SoninePairTerms {
   SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
     return sonine_cross(w, 1.0, 1.0, law_.eps(i, j), mu_ji, lambda_i, lambda_j);
   }
-  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
+                          std::size_t modes) const override {
     const double eps = law_.eps(k, i);
-    SonineTracerSums s{sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi), 0.0};
+    SonineTracerSums s{sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes), 0.0};
     // v1 (A2) as ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], ν_ki = (2/3)C₀₀: exactly 0 for ε = 1, T_i = T_k.
-    s.xi = (2.0 / 3.0) * s.C.C00 * ((1.0 - eps) - (1.0 + eps) * mk * (Ti - Tk) / ((mi + mk) * Tk));
+    s.xi = (2.0 / 3.0) * s.C(0, 0) * ((1.0 - eps) - (1.0 + eps) * mk * (Ti - Tk) / ((mi + mk) * Tk));
     return s;
   }
 
@@ -42,11 +43,13 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
     return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
   }
-  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
+                          std::size_t modes) const override {
     const double Ak = Tk / mk, Ai = Ti / mi;
-    const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai));
-    const SonineCollisionIntegrals& c = q.C;
-    return {{weight * c.C00, weight * c.C01, weight * c.C10, weight * c.C11}, -weight * q.energy[0] / (3.0 * Ak)};
+    const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai), modes);
+    SonineTracerSums s{{}, -weight * q.energy[0] / (3.0 * Ak)};
+    s.C.add(q.C, weight);
+    return s;
   }
 
  private:

@@ -1,6 +1,6 @@
 #pragma once
 // Where the first-Sonine pair terms come from, chosen once per restitution law (issue 12):
-//   constant ε    MG's closed forms (sonine_terms.hpp) and the closed C_pq (sonine2_diffusion.cpp);
+//   constant ε    MG's closed forms (sonine_terms.hpp) and the closed C_pq (sonine_cpq_table.hpp);
 //   ε(u)          the quadrature over the normal impact speed (sonine_quadrature.hpp). ε depends on the
 //                 physical impact speed, so the λ's must be in units with v0 = 1: λ_k = m_k/(2T_k).
 // SonineSystem (cooling rates and cumulant equations) and the second-Sonine tracer sums ask this object,
@@ -23,8 +23,9 @@ class SoninePairTerms {
   virtual SonineMoments self(std::size_t i, double w, double lambda_i) const = 0;
   virtual SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const = 0;
   // The tracer problem of k with partner i (weight = n_i σ_ki² χ_ki, masses, temperatures): the Maxwellian
-  // C_pq and ξ_ki (v1 A2 at constant ε, its quadrature otherwise).
-  virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
+  // C_pq (p, q < modes) and ξ_ki (v1 A2 at constant ε, its quadrature otherwise).
+  virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
+                                  std::size_t modes) const = 0;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

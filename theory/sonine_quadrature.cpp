@@ -2,8 +2,13 @@
 
 #include <gsl/gsl_integration.h>
 
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 #include <vector>
 
 #include "model/errors.hpp"
@@ -39,24 +44,39 @@ struct WRule {
   }
 };
 
-// Probabilists' Gauss–Hermite, 5 points (E over N(0,1), exact to degree 9): roots of He₅ = x⁵ − 10x³ + 15x,
-// weights 5!/(25 He₄(x)²).
-struct Hermite5 {
-  std::array<double, 5> x{}, weight{};
-  Hermite5() {
-    const double r1 = std::sqrt(5.0 - std::sqrt(10.0)), r2 = std::sqrt(5.0 + std::sqrt(10.0));
-    x = {-r2, -r1, 0.0, r1, r2};
-    for (std::size_t j = 0; j < 5; ++j) {
-      const double x2 = x[j] * x[j], he4 = x2 * x2 - 6.0 * x2 + 3.0;
-      weight[j] = 120.0 / (25.0 * he4 * he4);
-    }
+// Gauss rules for the expectation over N(0, 1) (probabilists' Hermite) and over Exp(1) (Laguerre), n points,
+// exact to degree 2n − 1, by Golub–Welsch (the eigen-decomposition of the recurrence's Jacobi matrix).
+struct GaussRule {
+  std::vector<double> x, weight;
+};
+GaussRule golub_welsch(std::size_t n, bool laguerre) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    if (laguerre) J(Eigen::Index(j), Eigen::Index(j)) = 2.0 * double(j) + 1.0;
+    if (j + 1 < n) J(Eigen::Index(j), Eigen::Index(j + 1)) = J(Eigen::Index(j + 1), Eigen::Index(j)) = laguerre ? double(j + 1) : std::sqrt(double(j + 1));
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
+  if (es.info() != Eigen::Success) throw NumericalError("Golub–Welsch: eigen-decomposition failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double v0 = es.eigenvectors()(0, Eigen::Index(j));
+    r.x.push_back(es.eigenvalues()[Eigen::Index(j)]), r.weight.push_back(v0 * v0);
+  }
+  return r;
+}
+
+// The rules of M modes: Hermite max(5, 2M), Laguerre max(2, M) points (see the header), M = 1 … 5.
+struct ModeRules {
+  std::array<GaussRule, max_sonine_modes + 1> hermite, laguerre;
+  ModeRules() {
+    for (std::size_t M = 1; M <= max_sonine_modes; ++M)
+      hermite[M] = golub_welsch(std::max<std::size_t>(5, 2 * M), false), laguerre[M] = golub_welsch(std::max<std::size_t>(2, M), true);
   }
 };
-
-// Gauss–Laguerre, 2 points (E over Exp(1), exact to degree 3).
-const double sqrt2 = std::sqrt(2.0);
-const std::array<double, 2> laguerre_x = {2.0 - sqrt2, 2.0 + sqrt2};
-const std::array<double, 2> laguerre_w = {(2.0 + sqrt2) / 4.0, (2.0 - sqrt2) / 4.0};
+const ModeRules& mode_rules() {
+  static const ModeRules r;
+  return r;
+}
 
 const WRule& w_rule() {
   static const WRule rule;
@@ -73,42 +93,50 @@ void sonine_quadrature_speeds(double V, double* u) {
   for (std::size_t n = 0; n < rule.w10.size(); ++n) u[n] = u_scale * rule.w10[n];
 }
 
-PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps) {
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps,
+                                           std::size_t modes) {
   std::vector<double> e(sonine_quadrature_nodes());
   sonine_quadrature_speeds(theta_k + theta_i, e.data());
   for (double& x : e) x = eps(x);
-  return sonine_pair_quadrature(theta_k, theta_i, mu, e.data());
+  return sonine_pair_quadrature(theta_k, theta_i, mu, e.data(), modes);
 }
 
-PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes) {
+  if (modes < 1 || modes > max_sonine_modes) throw std::invalid_argument("sonine_pair_quadrature: modes must be 1 to 5");
   const WRule& rule = w_rule();
-  static const Hermite5 hermite;
+  const GaussRule &hermite = mode_rules().hermite[modes], &laguerre = mode_rules().laguerre[modes];
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   PairSonineIntegrals out;
+  out.C.modes = modes;
+  std::array<double, max_sonine_modes> S{}, S1{};
   for (std::size_t n = 0; n < rule.w10.size(); ++n) {
     const double u = u_scale * rule.w10[n], beta = mu * (1.0 + eps_nodes[n]), bu = beta * u;
     std::array<double, 3> e2{}, e4{};
-    double c00 = 0.0, c01 = 0.0, c10 = 0.0, c11 = 0.0;
-    for (std::size_t h = 0; h < 5; ++h) {
+    SonineCollisionIntegrals c;
+    for (std::size_t h = 0; h < hermite.x.size(); ++h) {
       const double W = sW * hermite.x[h], zk = W + alpha * u, zk1 = zk - bu, zi = W - (1.0 - alpha) * u;
       const double yi = zi * zi * inv2i, S2i = 0.5 * yi * yi - 1.5 * yi + 0.375;  // E[S₂(c_i²) | v_iz]
-      for (std::size_t l = 0; l < 2; ++l) {
-        const double g = hermite.weight[h] * laguerre_w[l], R = 2.0 * theta_k * laguerre_x[l];
+      for (std::size_t l = 0; l < laguerre.x.size(); ++l) {
+        const double g = hermite.weight[h] * laguerre.weight[l], R = 2.0 * theta_k * laguerre.x[l];
         const double v2 = R + zk * zk, v21 = R + zk1 * zk1;  // v_k², v_k′²
         const double x = v2 * inv2k, x1 = v21 * inv2k, cc = (R + zk * zk1) * inv2k;  // c², c′², c·c′
         const double d2 = v21 - v2, d4 = v21 * v21 - v2 * v2, s2k = sonine_S2(x);
         e2[0] += g * d2, e2[1] += g * s2k * d2, e2[2] += g * S2i * d2;
         e4[0] += g * d4, e4[1] += g * s2k * d4, e4[2] += g * S2i * d4;
-        const double p0 = x - cc, p1 = x * sonine_S1(x) - cc * sonine_S1(x1);  // c·[c S_p(c²) − c′ S_p(c′²)], p = 0, 1
-        c00 += g * p0, c01 += g * sonine_S1(x) * p0, c10 += g * p1, c11 += g * sonine_S1(x) * p1;
+        sonine_vector_basis(x, modes, S.data()), sonine_vector_basis(x1, modes, S1.data());
+        for (std::size_t p = 0; p < modes; ++p) {
+          const double loss = x * S[p] - cc * S1[p];  // c·[c S_p(c²) − c′ S_p(c′²)]
+          for (std::size_t q = 0; q < modes; ++q) c(p, q) += g * S[q] * loss;
+        }
       }
     }
     const double m = flux * rule.weight[n];
     for (std::size_t j = 0; j < 3; ++j) out.energy[j] += m * e2[j], out.fourth[j] += m * e4[j];
-    out.C.C00 += m * c00, out.C.C01 += m * c01, out.C.C10 += m * c10, out.C.C11 += m * c11;
+    out.C.add(c, m);
   }
+  out.C.modes = modes;
   return out;
 }
 

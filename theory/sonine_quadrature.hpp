@@ -9,8 +9,9 @@
 // v_k′ = v_k − μ_ik (1 + ε(u)) u σ̂. Why it reduces to one integral: the σ̂ integral of a rotation-invariant
 // integrand is 4π times its value at σ̂ = ẑ, and given g_z = u the Maxwellian pair splits into independent parts
 //   v_kz = W + (θ_k/V) u,  v_iz = W − (θ_i/V) u,  W ~ N(0, θ_kθ_i/V);   |v_k⊥|² ~ Exp(mean 2θ_k), |v_i⊥|² ~ Exp(2θ_i).
-// E[· | u] of these polynomials is exact: Gauss–Hermite (5 points, degree 8 needed) in W, Gauss–Laguerre
-// (2 points, degree 3) in |v_k⊥|², and E[S₂(c_i²) | v_iz] = y²/2 − 3y/2 + 3/8, y = v_iz²/(2θ_i), in closed form.
+// E[· | u] of these polynomials is exact: Gauss–Hermite in W (max(5, 2M) points: degree 8 for ⟨v⁴⟩, 4M − 2 for
+// C_pq with M modes), Gauss–Laguerre in |v_k⊥|² (max(2, M) points: degree 3, 2M − 1), and
+// E[S₂(c_i²) | v_iz] = y²/2 − 3y/2 + 3/8, y = v_iz²/(2θ_i), in closed form.
 // The u integral is a fixed Gauss–Legendre rule in w, u = √(2V) w¹⁰ (as collision_moments.cpp): the
 // integrand is smooth in w although ε depends on u^(1/10), and fixed nodes keep ODE right-hand sides smooth.
 #include <array>
@@ -26,19 +27,21 @@ namespace granmix::theory {
 struct PairSonineIntegrals {
   // Collisional rates of ⟨v_k²⟩ and ⟨v_k⁴⟩: [0] at a = 0, [1] coefficient of a_k, [2] coefficient of a_i.
   std::array<double, 3> energy{}, fourth{};
-  SonineCollisionIntegrals C;  // the Maxwellian C_pq of the tracer problem (sonine2_diffusion.hpp)
+  SonineCollisionIntegrals C;  // the Maxwellian C_pq of the tracer problem (sonine2_diffusion.hpp), p, q < modes
 };
 
 // eps(u): the pair's restitution at normal impact speed u >= 0 (in the units of √θ).
 // mu = μ_ik = m_i/(m_i + m_k); theta_k = T_k/m_k, theta_i = T_i/m_i.
-PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps);
+// modes: the C_pq computed (p, q < modes ≤ max_sonine_modes).
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps,
+                                           std::size_t modes = 2);
 
 // The normal impact speeds u_n at which the quadrature needs ε for a pair with V = θ_k + θ_i, and the same
 // integrals with ε given there (eps_nodes[n] = ε(u_n)): callers that reuse ε between calls of equal V
 // (pairs k–i and i–k, the cooling and the velocity-decay closures) evaluate the law once.
 std::size_t sonine_quadrature_nodes();
 void sonine_quadrature_speeds(double V, double* u);
-PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
+PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes = 2);
 
 // The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
 // (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the

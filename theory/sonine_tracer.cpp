@@ -32,12 +32,13 @@ TracerLimit sonine_settled(const CollisionRates& r, bool maxwell) {
   return tracer_state(r, h.T[1] / h.T[0], zeta1 > 0.0 ? 2.0 / zeta1 : std::numeric_limits<double>::infinity());
 }
 
-// D_k[2]/D_k[1] of species k colliding with partner i only, at T_k, T_i (ζ = that pair's Maxwellian ξ_ki).
-double pair_sonine2_factor(const CollisionRates& r, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk, double Ti) {
+// D_k[M]/D_k[1] of species k colliding with partner i only, at T_k, T_i (ζ = that pair's Maxwellian ξ_ki).
+double pair_sonine_factor(const CollisionRates& r, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk, double Ti,
+                          std::size_t modes) {
   const model::Mixture& mix = r.mixture();
   const double s = mix.sigma(k, i);
-  const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * r.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti);
-  const double f = sonine2_factor(p.C, p.xi);
+  const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * r.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti, modes);
+  const double f = sonine_factor(p.C, p.xi);
   return std::isfinite(f) ? f : 1.0;
 }
 
@@ -48,10 +49,10 @@ TracerLimit sonine_tracer_limit(const CollisionRates& r, SonineTracerClosure clo
   const model::Restitution& law = r.law();
   const bool settles = !law.is_viscoelastic() && law.eps(0, 0) < 1.0;
   TracerLimit out = settles ? sonine_settled(r, !closure.cumulants) : tracer_limit(r);
-  if (!closure.second_sonine) return out;
+  if (closure.sonine_order < 2) return out;
   const auto terms = make_sonine_pair_terms(law);
-  const double f_gas = pair_sonine2_factor(r, *terms, 0, 0, 1.0, 1.0);
-  const double f_intruder = pair_sonine2_factor(r, *terms, 1, 0, out.theta, 1.0);
+  const double f_gas = pair_sonine_factor(r, *terms, 0, 0, 1.0, 1.0, closure.sonine_order);
+  const double f_intruder = pair_sonine_factor(r, *terms, 1, 0, out.theta, 1.0, closure.sonine_order);
   out.D_gas *= f_gas, out.tau_v_gas *= f_gas;  // τ_v = D m/T: the memory of the closed MSD
   out.D_intruder *= f_intruder, out.tau_v_intruder *= f_intruder;
   return out;

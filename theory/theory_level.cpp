@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 #include "initial_state.hpp"
 #include "settled_ratios.hpp"
@@ -35,8 +36,8 @@ class PaperLevel final : public TheoryLevel {
 
 // The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
-// ODE (transients included) with two Sonine modes per species (SecondSonineDecay: the first-Sonine decay
-// from the start, the second-Sonine D_k in the diffusive regime, physics-beyond §3); settled states from
+// ODE (transients included) with kinetic_sonine_order Sonine modes per species (SonineDecay: the first-Sonine
+// decay from the start, D_k[M] in the diffusive regime, physics-beyond §3); settled states from
 // the first-Sonine HCS. The pair integrals follow the restitution law (sonine_pair_terms.hpp): closed forms
 // at constant ε, a quadrature over the normal impact speed for a viscoelastic law, whose cumulants then
 // follow a drifting quasi-state (ε → 1 as the gas cools) and which has no HCS: its settled ratios stay the
@@ -61,13 +62,14 @@ bool sonine_applies(const CollisionRates& rates) {
   return false;
 }
 
-// second_sonine = false: the same level with the first-Sonine D_k (one VACF mode at ν_k = τ_v,k⁻¹ + ζ_k/2,
-// D_k[1] settled) — "kinetic-sonine1", the lower order whose difference to the kinetic level is the size of
-// its last Sonine correction (a scene's correction_from = "sonine1").
+// order: the Sonine order M of D_k (the VACF modes per species). "kinetic" is M = kinetic_sonine_order;
+// "kinetic-sonineN" the same level with D_k[N] — N = 1: one VACF mode at ν_k = τ_v,k⁻¹ + ζ_k/2, D_k[1]
+// settled. A lower order's difference to the kinetic level is the size of its last Sonine corrections
+// (a scene's correction_from = "sonineN").
 class KineticLevel final : public TheoryLevel {
  public:
-  explicit KineticLevel(bool second_sonine) : second_sonine_(second_sonine) {}
-  const char* name() const override { return second_sonine_ ? "kinetic" : "kinetic-sonine1"; }
+  explicit KineticLevel(std::size_t order) : order_(order), name_(order == kinetic_sonine_order ? "kinetic" : "kinetic-sonine" + std::to_string(order)) {}
+  const char* name() const override { return name_.c_str(); }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return;
@@ -75,15 +77,15 @@ class KineticLevel final : public TheoryLevel {
     // per pair and right-hand side.
     const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(rates.law());
     opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::vector<double>{}, terms);
-    if (second_sonine_) opt.decay = std::make_shared<SecondSonineDecay>(rates, terms);
+    if (order_ > 1) opt.decay = std::make_shared<SonineDecay>(rates, order_, terms);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
-    if (!sonine_applies(rates) || !second_sonine_) return d;
-    // Second-Sonine D_k (physics-beyond §3); where the expansion has no diffusive solution (NaN, a
+    if (!sonine_applies(rates) || order_ < 2) return d;
+    // D_k[M] (physics-beyond §3); where the expansion has no diffusive solution (NaN, a
     // large rare grain near the Santos–Dufty edge) the first-Sonine D stays.
     for (std::size_t k = 0; k < T.size(); ++k) {
-      const double f = sonine2_factor(rates, k, T.data());
+      const double f = sonine_factor(rates, k, T.data(), order_);
       if (std::isfinite(f)) d.D[k] *= f, d.tau_v[k] *= f;  // τ_v = D m/T: the memory of the MSD's closed form
     }
     for (std::size_t k = 0; k < T.size(); ++k) d.D_ratio[k] = d.D[k] / d.D[0];
@@ -106,19 +108,21 @@ class KineticLevel final : public TheoryLevel {
     if (!sonine_applies(rates) || rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
   }
-  TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, second_sonine_}); }
+  TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, order_}); }
 
  private:
-  bool second_sonine_;
+  std::size_t order_;
+  std::string name_;
 };
 
 }  // namespace
 
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "paper") return std::make_unique<PaperLevel>();
-  if (name == "kinetic") return std::make_unique<KineticLevel>(true);
-  if (name == "kinetic-sonine1") return std::make_unique<KineticLevel>(false);
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1)");
+  if (name == "kinetic") return std::make_unique<KineticLevel>(kinetic_sonine_order);
+  for (std::size_t n = 1; n <= max_sonine_modes; ++n)
+    if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5)");
 }
 
 }  // namespace granmix::theory

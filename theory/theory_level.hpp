@@ -46,8 +46,8 @@ class TheoryLevel {
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
 };
 
-// "paper" or "kinetic" (scene.theory.level), or "kinetic-sonine1" (the kinetic level with first-Sonine
-// D_k, the lower order of a scene's correction_from = "sonine1"); throws std::invalid_argument otherwise.
+// "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to
+// Sonine order N, the lower order of a scene's correction_from = "sonineN"); throws std::invalid_argument otherwise.
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name);
 
 }  // namespace granmix::theory

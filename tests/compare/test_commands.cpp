@@ -98,15 +98,16 @@ TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent tran
   CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_paper", "D_ratio_increment_paper",
                                               "D_ratio_sonine1", "D_ratio_increment_sonine1"});
   REQUIRE(t.rows.size() == 102);
-  // The sonine1 column differs from the kinetic one by exactly the second-Sonine factors of the settled
-  // first-Sonine HCS (physics-beyond §3): D₂/D₁ = (f₂/f₁) × its first-Sonine value, f₂/f₁ 0.94–0.98 here.
+  // The sonine1 column differs from the kinetic one by exactly the factors D_k[M]/D_k[1] (M = 4) of the settled
+  // first-Sonine HCS (physics-beyond §3): D₂/D₁ = (f₂/f₁) × its first-Sonine value, f₂/f₁ 0.96–1.14 here.
   for (const double e : {0.2, 0.5, 0.8}) {
     const std::size_t row = 2 * std::size_t(std::lround(e * 50)) + 1;  // species 2 of sweep point e (51 points)
     REQUIRE(t.at(row, "eps") == Approx(e));
     const model::Mixture mix({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}});
     const theory::CollisionRates rates(mix, model::Restitution::constant(2, e), model::dilute_contact_values(2));
     const std::vector<double> T = theory::sonine_hcs(mix, model::Restitution::constant(2, e), model::dilute_contact_values(2)).T;
-    const double f = theory::sonine2_factor(rates, 1, T.data()) / theory::sonine2_factor(rates, 0, T.data());
+    const std::size_t M = theory::kinetic_sonine_order;
+    const double f = theory::sonine_factor(rates, 1, T.data(), M) / theory::sonine_factor(rates, 0, T.data(), M);
     CHECK(t.at(row, "D_ratio") / t.at(row, "D_ratio_sonine1") == Approx(f).epsilon(1e-10));
     CHECK(std::abs(f - 1) > 0.02);
   }
@@ -152,10 +153,17 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   const auto ordered = nlohmann::ordered_json::parse(r.output);
   std::vector<std::string> keys;
   for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());
-  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor"});
+  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor", "D_sonine_factors"});
   // Second-Sonine factor D_k[2]/D_k[1] at the settled ratios, computed in-process (0.9209 for the light species).
-  for (std::size_t k = 0; k < 2; ++k)
-    CHECK(j["species"][k]["D_sonine2_factor"].get<double>() == Approx(theory::sonine2_factor(rates, k, d.T.data())).epsilon(1e-14));
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(j["species"][k]["D_sonine2_factor"].get<double>() == Approx(theory::sonine_factor(rates, k, d.T.data(), 2)).epsilon(1e-14));
+    // Orders 1 … 5: order 1 is 1, order 2 the factor above (the light species converges alternating to ~0.935).
+    const auto orders = j["species"][k]["D_sonine_factors"].get<std::vector<double>>();
+    REQUIRE(orders.size() == theory::max_sonine_modes);
+    CHECK(orders[0] == 1.0);
+    CHECK(orders[1] == j["species"][k]["D_sonine2_factor"].get<double>());
+    for (std::size_t M = 1; M <= orders.size(); ++M) CHECK(orders[M - 1] == Approx(theory::sonine_factor(rates, k, d.T.data(), M)).epsilon(1e-14));
+  }
 }
 
 TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapman-Cowling second approximation)", "[compare]") {

@@ -1,4 +1,4 @@
-// The kinetic level's velocity correlation with two Sonine modes (SecondSonineDecay, issue 12): its settled
+// The velocity correlation with two Sonine modes (SonineDecay at M = 2, level kinetic-sonine2; issue 12): its settled
 // MSD slope is 6 D_k[2] of physics-beyond §3, its short-time decay is the first-Sonine ν_k (not the
 // long-time ν_eff of the former one-mode closure), and an elastic gas settles at Chapman–Cowling's 59/58 D[1].
 // Mutants run against these (2026-12-02): Q decaying at ν_eff with P dropped (the former closure) fails the
@@ -23,7 +23,7 @@ namespace {
 TemperatureHistory kinetic_history(const CollisionRates& r, std::vector<double> T0, double t_end) {
   TemperatureOptions o;
   o.vacf = true;
-  make_theory_level("kinetic")->configure(o, r);
+  make_theory_level("kinetic-sonine2")->configure(o, r);
   REQUIRE(o.decay);
   REQUIRE(o.decay->modes() == 2);
   return TemperatureHistory(r, std::move(T0), t_end, o);
@@ -51,9 +51,9 @@ TEST_CASE("two-mode VACF: the settled MSD slope of the bo1-fig02 binary is 6 D_k
     // the mode's scaling terms at the Maxwellian ξ_M of the same sums as C_pq (sonine2_diffusion.hpp).
     const SonineTracerSums s = sonine2_tracer_sums(r, k, T.data());
     const SonineCollisionIntegrals& C = s.C;
-    const double zeta = xi[k], D1 = 1.5 * T[k] / r.mixture()[k].mass / (C.C00 - 0.75 * zeta);
+    const double zeta = xi[k], D1 = 1.5 * T[k] / r.mixture()[k].mass / (C(0, 0) - 0.75 * zeta);
     const double D2 = 1.5 * T[k] / r.mixture()[k].mass /
-                      (C.C00 - 0.75 * zeta - C.C01 * (C.C10 + 3.75 * s.xi) / (C.C11 - 3.75 * s.xi - 1.875 * zeta));
+                      (C(0, 0) - 0.75 * zeta - C(0, 1) * (C(1, 0) + 3.75 * s.xi) / (C(1, 1) - 3.75 * s.xi - 1.875 * zeta));
     const double f = D2 / D1;
     const double ratio = slope(h, k, t, 1e-3) / (6 * D2);
     std::printf("bo1-fig02 settled, species %zu: slope/(6 D[2]) - 1 = %.2e (D[2]/D[1] = %.5f; xi_1/xi_2 - 1 = %.1e; "
@@ -79,7 +79,7 @@ TEST_CASE("two-mode VACF: from a Maxwellian start the velocity decays first at t
   h.cooling_model().rates(T0.data(), z.data(), xi.data(), dz.data());
   for (std::size_t k = 0; k < N; ++k) {
     const SonineCollisionIntegrals C = sonine2_collision_integrals(r, k, T0.data());
-    const double nu = 2.0 / 3.0 * C.C00, nu_eff = kinetic_velocity_decay_rate(r, k, T0.data());
+    const double nu = 2.0 / 3.0 * C(0, 0), nu_eff = kinetic_velocity_decay_rate(r, k, T0.data(), 2);
     const double a = 3 * T0[k] / r.mixture()[k].mass;
     auto rate = [&](double t) { return 3 * (1 - h.msd_vacf(t, k) / (a * t * t)) / t; };
     const double t = 1e-3 / nu, measured = 2 * rate(t / 2) - rate(t);  // Richardson: O(t²) left
@@ -99,7 +99,7 @@ TEST_CASE("two-mode VACF: an elastic gas of one species settles at D = (59/58) D
   const double nu = r.inv_tau_v_species(0, T0.data()), t = 200 / nu;
   TemperatureOptions o;
   o.vacf = true;
-  o.decay = std::make_shared<SecondSonineDecay>(r);
+  o.decay = std::make_shared<SonineDecay>(r, 2);
   const TemperatureHistory h(r, T0, 2 * t, o);
   const double D1 = T0[0] / (r.mixture()[0].mass * nu);
   // M = 6D t + const + O(e^(−νt)): a central difference is exact up to the interpolant's rtol.
