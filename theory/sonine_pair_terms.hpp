@@ -3,7 +3,7 @@
 //   constant ε    MG's closed forms (sonine_terms.hpp) and the closed C_pq (sonine_cpq_table.hpp);
 //   ε(u)          the quadrature over the normal impact speed (sonine_quadrature.hpp). ε depends on the
 //                 physical impact speed, so the λ's must be in units with v0 = 1: λ_k = m_k/(2T_k).
-// SonineSystem (cooling rates and cumulant equations) and the second-Sonine tracer sums ask this object,
+// SonineSystem (cooling rates and cumulant equations) and the tracer sums of D to Sonine order M ask this object,
 // never the law, so a viscoelastic gas gets the same kinetic level as a constant-ε one. The quadrature keeps
 // the ε of its last evaluation per pair (no allocation, the same ε for the cooling and the decay closures
 // when they share the object): like the closures, one object serves one integration at a time.

@@ -4,14 +4,14 @@
 //   paper    the papers' closure: Maxwellian cooling rates (v1 A2), the scene's MSD form (v1 Eq. 17 by
 //            default), D_k = T_k τ_v,k/m_k (v1 Eq. 19 = the first-Sonine D, physics-beyond §1).
 //   kinetic  first-Sonine (Garzó–Dufty) cooling rates with relaxing cumulants (physics-beyond §4), the MSD
-//            by the velocity-autocorrelation ODE (§2) with two Sonine modes per species (SecondSonineDecay:
-//            first-Sonine ν_k at short times, the second-Sonine D at long times, §3), settled states of the
+//            by the velocity-autocorrelation ODE (§2) with kinetic_sonine_order = 4 Sonine modes per species
+//            (SonineDecay: first-Sonine ν_k at short times, D to Sonine order 4 at long times, §3), settled states of the
 //            first-Sonine HCS (MG App. A); for a viscoelastic law the same integrals by quadrature over the
 //            impact speed (sonine_quadrature.hpp).
 // Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
 // Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
-// second-Sonine D); both give the MSD and the TAMSD from one velocity correlation in closed form (the
-// kinetic one keeps one mode decaying at ν_eff: no two-mode transient, unlike the mixture's VACF ODE).
+// D to Sonine order 4); both give the MSD and the TAMSD from one velocity correlation in closed form (the
+// kinetic one keeps one mode decaying at ν_eff: no multi-mode transient, unlike the mixture's VACF ODE).
 // A level is a type, chosen once per scene: the code that computes curves never asks which it is.
 #include <memory>
 #include <string>
