@@ -18,6 +18,7 @@
 #include "model/enskog.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/sonine2_diffusion.hpp"
+#include "gauss_rules.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -37,37 +38,13 @@ double psi_integrand(int p, int q, const Vec& v, const Vec& vp, double Ak) {
   return S(q, c2) * s * (dot(v, v) * S(p, c2) - dot(v, vp) * S(p, cp2));
 }
 
-// Gauss rules by Golub–Welsch: Hermite (weight e^{−x²}) and Laguerre (e^{−u}), Legendre on [0, 1].
-struct Rule {
-  std::vector<double> x, w;
-};
-Rule golub_welsch(int n, const std::function<double(int)>& diag, const std::function<double(int)>& off, double mu0) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  for (int j = 0; j < n; ++j) J(j, j) = diag(j);
-  for (int j = 0; j + 1 < n; ++j) J(j, j + 1) = J(j + 1, j) = off(j);
-  Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
-  Rule r;
-  for (int j = 0; j < n; ++j) {
-    r.x.push_back(es.eigenvalues()(j));
-    r.w.push_back(mu0 * es.eigenvectors()(0, j) * es.eigenvectors()(0, j));
-  }
-  return r;
-}
-Rule hermite(int n) { return golub_welsch(n, [](int) { return 0.0; }, [](int j) { return std::sqrt((j + 1) / 2.0); }, std::sqrt(pi)); }
-Rule laguerre(int n) { return golub_welsch(n, [](int j) { return 2.0 * j + 1; }, [](int j) { return j + 1.0; }, 1.0); }
-Rule legendre01(int n) {
-  Rule r = golub_welsch(n, [](int) { return 0.0; }, [](int j) { return (j + 1) / std::sqrt(4.0 * (j + 1) * (j + 1) - 1); }, 2.0);
-  for (std::size_t j = 0; j < r.x.size(); ++j) r.x[j] = 0.5 * (r.x[j] + 1), r.w[j] *= 0.5;
-  return r;
-}
-
 // C_pq/weight by quadrature, written from the definition: v ~ N(0, A_k), w ~ N(0, A_i) rewritten as
 // g = v − w ~ N(0, V) and v = (A_k/V) g + G, G ~ N(0, A_k A_i/V) independent of g; by isotropy g = |g| ẑ.
 // |g| (Maxwell, Gauss–Laguerre in u = |g|²/2V), G (Gauss–Hermite), cos θ (Gauss–Legendre), φ (trapezoid):
 // the integrand is a polynomial in each, so every rule is exact at these orders.
 double quadrature_C(int p, int q, double mu, double eps, double Ak, double Ai) {
   const double V = Ak + Ai, a = Ak / V, sG = std::sqrt(2.0 * Ak * Ai / V), beta = mu * (1 + eps);
-  const Rule H = hermite(6), L = laguerre(8), P = legendre01(8);
+  const test::Rule H = test::hermite(6), L = test::laguerre(8), P = test::legendre01(8);
   const int nphi = 16;
   double sum = 0.0;
   for (std::size_t iu = 0; iu < L.x.size(); ++iu) {

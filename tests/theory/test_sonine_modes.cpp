@@ -19,6 +19,7 @@
 #include "theory/sonine_quadrature.hpp"
 #include "theory/temperature_history.hpp"
 #include "theory/theory_level.hpp"
+#include "gauss_rules.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -41,28 +42,13 @@ double laguerre32(int p, double x) {
   return s;
 }
 
-struct Rule {
-  std::vector<double> x, w;
-};
-Rule golub_welsch(int n, double (*diag)(int), double (*off)(int), double mu0) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(n, n);
-  for (int j = 0; j < n; ++j) J(j, j) = diag(j);
-  for (int j = 0; j + 1 < n; ++j) J(j, j + 1) = J(j + 1, j) = off(j);
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
-  Rule r;
-  for (int j = 0; j < n; ++j) r.x.push_back(es.eigenvalues()(j)), r.w.push_back(mu0 * std::pow(es.eigenvectors()(0, j), 2));
-  return r;
-}
-
 // C_pq, p, q < 5, by quadrature over both Maxwellians and σ̂ in another set of variables than the library's:
 // relative velocity g = |g| ĝ (ĝ = ẑ by isotropy; |g|²/2V Gauss–Laguerre with the √ in the integrand), centre
 // part G (Gauss–Hermite per component), σ̂ on the hemisphere (Gauss–Legendre in cos θ, trapezoid in φ). Every
 // rule is exact for these polynomial integrands (degree ≤ 18 in each variable).
 std::array<double, 25> quadrature_C(double mu, double eps, double Ak, double Ai) {
   const double V = Ak + Ai, a = Ak / V, sG = std::sqrt(2.0 * Ak * Ai / V), beta = mu * (1 + eps);
-  static const Rule H = golub_welsch(10, [](int) { return 0.0; }, [](int j) { return std::sqrt((j + 1) / 2.0); }, std::sqrt(pi));
-  static const Rule L = golub_welsch(14, [](int j) { return 2.0 * j + 1; }, [](int j) { return j + 1.0; }, 1.0);
-  static const Rule P = golub_welsch(12, [](int) { return 0.0; }, [](int j) { return (j + 1) / std::sqrt(4.0 * (j + 1) * (j + 1) - 1); }, 2.0);
+  static const test::Rule H = test::hermite(10), L = test::laguerre(14), P = test::legendre01(12);
   const int nphi = 24;
   std::array<double, 25> sum{};
   for (std::size_t iu = 0; iu < L.x.size(); ++iu) {
@@ -76,7 +62,7 @@ std::array<double, 25> quadrature_C(double mu, double eps, double Ak, double Ai)
           double S[5];
           for (int p = 0; p < 5; ++p) S[p] = laguerre32(p, c2);
           for (std::size_t t = 0; t < P.x.size(); ++t) {
-            const double ct = 0.5 * (P.x[t] + 1), wt = 0.5 * P.w[t], st = std::sqrt(1 - ct * ct), gs = g * ct;
+            const double ct = P.x[t], wt = P.w[t], st = std::sqrt(1 - ct * ct), gs = g * ct;
             for (int f = 0; f < nphi; ++f) {
               const double phi = 2 * pi * f / nphi, s[3] = {st * std::cos(phi), st * std::sin(phi), ct};
               double vvp = 0, vp2 = 0;
