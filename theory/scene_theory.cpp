@@ -266,16 +266,32 @@ bool corrected_from(const model::Scene& s, const std::string& lower) {
   });
 }
 
+// The scene with its times in natural units (MG time unit: compute in natural units, report t, lag and
+// t_s in units of t0).
+model::Scene in_natural_units(const model::Scene& scene, double unit) {
+  model::Scene scaled = scene;
+  for (double& t : scaled.times) t *= unit;
+  scaled.observables.tamsd_measurement_time *= unit;
+  return scaled;
+}
+
 }  // namespace
+
+TheoryResult run_level(const model::Scene& scene, const std::string& level) {
+  const auto start = std::chrono::steady_clock::now();
+  TheoryResult r;
+  const double unit = scene_time_unit(scene);
+  r.table = level_table(in_natural_units(scene, unit), *make_theory_level(level), r.stats);
+  if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
 
 TheoryResult run_theory(const model::Scene& scene) {
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;
-  // MG time unit: compute in natural units, report t, lag and t_s in units of t0.
   const double unit = scene_time_unit(scene);
-  model::Scene scaled = scene;
-  for (double& t : scaled.times) t *= unit;
-  scaled.observables.tamsd_measurement_time *= unit;
+  const model::Scene scaled = in_natural_units(scene, unit);
   const model::Scene& s = scaled;
   const auto level = make_theory_level(s.theory.level);
   r.table = level_table(s, *level, r.stats);

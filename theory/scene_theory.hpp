@@ -2,6 +2,8 @@
 // The theory curves a scene asks for, and nothing else (design.md §1: "model only what a scene
 // needs"): temperatures, MSD, t_s, D_k/D_1, γ, TAMSD along the time grid, or settled D_k/D_1
 // along a parameter sweep.
+#include <string>
+
 #include "model/scene.hpp"
 #include "model/table.hpp"
 #include "temperature_history.hpp"
@@ -15,6 +17,9 @@ struct TheoryResult {
 };
 
 TheoryResult run_theory(const model::Scene& scene);
+// One level's curves alone (level: paper, kinetic, kinetic-sonineN; no companion columns), timed:
+// `granmix bench theory` compares the levels' cost scene by scene.
+TheoryResult run_level(const model::Scene& scene, const std::string& level);
 
 // Factor from the scene's time unit to natural units (1, or MG's t0 for [time] unit = "mg"), and
 // the conversion of a table's time columns (t, lag, t_s) by a factor.

@@ -465,6 +465,25 @@ TEST_CASE("granmix bench selectors --quick --json: one object per case with the 
   CHECK(bad.output.find("selectors, theory, dsmc-error, methods") != std::string::npos);
 }
 
+TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by scene", "[compare]") {
+  const auto d = test::fresh_dir("bench-theory");
+  const auto r = test::run_granmix("bench theory --quick --json --repeats 1 --out " + d.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  std::size_t levels = 0;
+  for (const auto& j : json_lines(r.output)) {
+    const std::string c = j["case"].get<std::string>();
+    if (!c.starts_with("levels: ")) continue;
+    ++levels;
+    CHECK(j["kinetic_seconds"].get<double>() > 0.0);
+    CHECK(j["paper_seconds"].get<double>() > 0.0);
+    // bo1-fig01/-02/-03-aged: the kinetic level moves the light MSD by 7-15% (docs/paper-fidelity.md), never by all of it.
+    CHECK(j["kinetic_change"].get<double>() > 0.01);
+    CHECK(j["kinetic_change"].get<double>() < 0.5);
+  }
+  CHECK(levels == 3);
+}
+
 TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, four tables written", "[compare][dsmc]") {
   const auto d = test::fresh_dir("bench-gaps");
   const auto r = test::run_granmix("bench gaps --quick --json --out " + d.string());
