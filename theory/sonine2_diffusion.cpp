@@ -2,10 +2,12 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include "sonine_cpq_table.hpp"
 #include "sonine_pair_terms.hpp"
@@ -36,6 +38,24 @@ const ModeMatrices& mode_matrices() {
   return m;
 }
 
+// The table's rows with p, q < M, flattened for the ODE right-hand sides (made once per M): the entry of C,
+// the offsets into the power arrays, the coefficient.
+struct CpqTerm {
+  unsigned entry, a_index, b_index;
+  double coefficient;
+};
+const std::vector<CpqTerm>& cpq_terms(std::size_t modes) {
+  static const auto per_modes = [] {
+    std::array<std::vector<CpqTerm>, MM + 1> t;
+    for (std::size_t M = 1; M <= MM; ++M)
+      for (const SonineCpqTerm& r : sonine_cpq_terms)
+        if (std::size_t(r.p) < M && std::size_t(r.q) < M)
+          t[M].push_back({unsigned(r.p * MM + r.q), unsigned(int(MM) + r.ia), unsigned(r.ib), r.coefficient});
+    return t;
+  }();
+  return per_modes[modes];
+}
+
 using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, int(MM), int(MM)>;
 
 }  // namespace
@@ -60,11 +80,7 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
   for (std::size_t j = 1; j < bpow.size(); ++j) bpow[j] = bpow[j - 1] * b;
   SonineCollisionIntegrals C;
   C.modes = modes;
-  for (const SonineCpqTerm& t : sonine_cpq_terms) {
-    if (std::size_t(t.p) >= modes) break;  // rows sorted by p
-    if (std::size_t(t.q) >= modes) continue;
-    C(t.p, t.q) += t.coefficient * apow[MM + t.ia] * bpow[t.ib];
-  }
+  for (const CpqTerm& t : cpq_terms(modes)) C.c[t.entry] += t.coefficient * apow[t.a_index] * bpow[t.b_index];
   for (double& x : C.c) x *= bP;
   return C;
 }
@@ -147,11 +163,39 @@ void SonineDecay::rates(const double* T, const double*, double* nu) const {
   for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = kinetic_velocity_decay_rate(rates_, *terms_, k, T, modes_);
 }
 
+void SonineDecay::update(const double* T) const {
+  const std::size_t N = rates_.size();
+  const bool known = T_.size() == N;
+  if (known && std::equal(T, T + N, T_.begin())) return;
+  sums_.resize(N), diffusive_.resize(N);
+  if (N > pair_cache_species) {
+    for (std::size_t k = 0; k < N; ++k) sums_[k] = sonine2_tracer_sums(rates_, *terms_, k, T, modes_);
+  } else {
+    const model::Mixture& mix = rates_.mixture();
+    pairs_.resize(N * N);
+    for (std::size_t k = 0; k < N; ++k)
+      for (std::size_t i = 0; i < N; ++i) {
+        if (known && T[k] == T_[k] && T[i] == T_[i]) continue;
+        const double s = mix.sigma(k, i);
+        pairs_[k * N + i] = terms_->tracer(k, i, mix[i].density * s * s * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], modes_);
+      }
+    for (std::size_t k = 0; k < N; ++k) {  // as sonine2_tracer_sums: from zero, partners in order
+      SonineTracerSums& sum = sums_[k];
+      sum = SonineTracerSums{};
+      sum.C.modes = modes_;
+      for (std::size_t i = 0; i < N; ++i) sum.C.add(pairs_[k * N + i].C), sum.xi += pairs_[k * N + i].xi;
+    }
+  }
+  for (std::size_t k = 0; k < N; ++k) diffusive_[k] = std::isfinite(sonine_factor(sums_[k].C, sums_[k].xi));
+  T_.assign(T, T + N);
+}
+
 void SonineDecay::correlation_rates(const CollisionRates&, const double* T, const double*, const double* Q, double* dQ, double*) const {
   const std::size_t N = rates_.size(), M = modes_;
+  update(T);
   for (std::size_t k = 0; k < N; ++k) {
-    const SonineTracerSums s = sonine2_tracer_sums(rates_, *terms_, k, T, M);
-    if (!std::isfinite(sonine_factor(s.C, s.xi))) {  // no diffusive solution: first-Sonine ν_k, the other modes decoupled
+    const SonineTracerSums& s = sums_[k];
+    if (!diffusive_[k]) {  // no diffusive solution: first-Sonine ν_k, the other modes decoupled
       const double nu1 = 0.5 * s.xi + rates_.inv_tau_v_species(k, T);
       dQ[k] = 3.0 * T[k] / rates_.mixture()[k].mass - nu1 * Q[k];
       for (std::size_t p = 1; p < M; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];

@@ -110,9 +110,19 @@ class SonineDecay final : public VelocityDecay {
                          double* nu) const override;
 
  private:
+  // Per species at the temperatures of the last call: the sums and whether the problem is diffusive. CVODE's
+  // difference-quotient Jacobian perturbs one unknown per column: the MSDs, modes and cumulants at unchanged T
+  // (nothing to recompute), one T_j (only the pairs with j: kept per pair up to pair_cache_species species,
+  // and summed in the same order, so the sums are bitwise those of a full pass).
+  void update(const double* T) const;
+  static constexpr std::size_t pair_cache_species = 300;
+
   const CollisionRates& rates_;
   std::size_t modes_;
   std::shared_ptr<const SoninePairTerms> terms_;
+  mutable std::vector<double> T_;
+  mutable std::vector<SonineTracerSums> pairs_, sums_;
+  mutable std::vector<char> diffusive_;
 };
 
 }  // namespace granmix::theory

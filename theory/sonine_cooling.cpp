@@ -1,5 +1,6 @@
 #include "sonine_cooling.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace granmix::theory {
@@ -20,6 +21,10 @@ SonineCooling::SonineCooling(const CollisionRates& rates, CumulantMode mode, std
 }
 
 void SonineCooling::assemble(const double* T) const {
+  // The N² pair terms depend on T only: CVODE's difference-quotient Jacobian perturbs one unknown at a time,
+  // and for the cumulants, MSDs and VACF modes (most columns) T is bitwise the same as at the last call.
+  if (assembled_ && std::equal(T, T + N_, assembled_T_.begin())) return;
+  assembled_T_.assign(T, T + N_), assembled_ = true;
   for (std::size_t k = 0; k < N_; ++k) lambda_[k] = rates_.mixture()[k].mass / (2.0 * T[k]);  // v0 = 1
   system_.assemble(lambda_.data());
 }

@@ -49,6 +49,8 @@ class SonineCooling final : public CoolingModel {
   double n_;  // total density: ν_ref = n σ_ref² v0 with σ_ref = v0 = 1
   mutable SonineSystem system_;
   mutable std::vector<double> lambda_, c_, r_;
+  mutable std::vector<double> assembled_T_;  // the temperatures system_ was last assembled at
+  mutable bool assembled_ = false;
 };
 
 }  // namespace granmix::theory
