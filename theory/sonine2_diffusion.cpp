@@ -38,20 +38,24 @@ const ModeMatrices& mode_matrices() {
   return m;
 }
 
-// The table's rows with p, q < M, flattened for the ODE right-hand sides (made once per M): the entry of C,
-// the offsets into the power arrays, the coefficient.
-struct CpqTerm {
-  unsigned entry, a_index, b_index;
-  double coefficient;
+// The table's rows with p, q < M grouped for the ODE right-hand sides (made once per M): per entry of C and
+// power of a, the polynomial in β (Horner; 64 groups of 170 rows at M = 4).
+struct CpqGroup {
+  unsigned entry, a_index, degree;
+  std::array<double, 2 * MM> beta{};  // coefficients of β^0 … β^degree
 };
-const std::vector<CpqTerm>& cpq_terms(std::size_t modes) {
+const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
   static const auto per_modes = [] {
-    std::array<std::vector<CpqTerm>, MM + 1> t;
+    std::array<std::vector<CpqGroup>, MM + 1> g;
     for (std::size_t M = 1; M <= MM; ++M)
-      for (const SonineCpqTerm& r : sonine_cpq_terms)
-        if (std::size_t(r.p) < M && std::size_t(r.q) < M)
-          t[M].push_back({unsigned(r.p * MM + r.q), unsigned(int(MM) + r.ia), unsigned(r.ib), r.coefficient});
-    return t;
+      for (const SonineCpqTerm& r : sonine_cpq_terms) {
+        if (std::size_t(r.p) >= M || std::size_t(r.q) >= M) continue;
+        const unsigned entry = unsigned(r.p * MM + r.q), a_index = unsigned(int(MM) + r.ia);
+        if (g[M].empty() || g[M].back().entry != entry || g[M].back().a_index != a_index) g[M].push_back({entry, a_index, 0, {}});
+        g[M].back().beta.at(std::size_t(r.ib)) = r.coefficient;  // rows sorted by p, q, ia, ib
+        g[M].back().degree = std::max(g[M].back().degree, unsigned(r.ib));
+      }
+    return g;
   }();
   return per_modes[modes];
 }
@@ -73,14 +77,17 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
   if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
   const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
   const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
-  std::array<double, 3 * MM> apow{}, bpow{};  // a^(j − MM) (the table's ia is −4 … 8), β^j (ib ≤ 8)
-  apow[MM] = 1.0, bpow[0] = 1.0;
+  std::array<double, 3 * MM> apow{};  // a^(j − MM) (the table's ia is −4 … 8; ib ≤ 8)
+  apow[MM] = 1.0;
   for (std::size_t j = MM + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
   for (std::size_t j = MM; j-- > 0;) apow[j] = apow[j + 1] / a;
-  for (std::size_t j = 1; j < bpow.size(); ++j) bpow[j] = bpow[j - 1] * b;
   SonineCollisionIntegrals C;
   C.modes = modes;
-  for (const CpqTerm& t : cpq_terms(modes)) C.c[t.entry] += t.coefficient * apow[t.a_index] * bpow[t.b_index];
+  for (const CpqGroup& g : cpq_groups(modes)) {
+    double poly = g.beta[g.degree];
+    for (unsigned j = g.degree; j-- > 0;) poly = poly * b + g.beta[j];
+    C.c[g.entry] += poly * apow[g.a_index];
+  }
   for (double& x : C.c) x *= bP;
   return C;
 }
