@@ -17,6 +17,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 #include "commands.hpp"
@@ -87,12 +88,12 @@ int run(const HcsOptions& o) {
   std::vector<double> sonine2(mix.size());
   std::vector<std::vector<double>> orders(mix.size());
   for (std::size_t k = 0; k < mix.size(); ++k) {
-    sonine2[k] = theory::sonine_factor(rates, k, d.T.data(), 2);
     for (std::size_t M = 1; M <= theory::max_sonine_modes; ++M) {
       const double f = theory::sonine_factor(rates, k, d.T.data(), M);
       if (!std::isfinite(f)) break;
       orders[k].push_back(f);
     }
+    sonine2[k] = orders[k].size() > 1 ? orders[k][1] : std::numeric_limits<double>::quiet_NaN();
   }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
   const double eps_one = listed ? o.eps : o.alpha;

@@ -92,14 +92,19 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
   return C;
 }
 
+SonineTracerSums sonine_pair_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk,
+                                  double Ti, std::size_t modes) {
+  const model::Mixture& mix = rates.mixture();
+  const double s = mix.sigma(k, i);
+  return terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti, modes);
+}
+
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
                                      std::size_t modes) {
-  const model::Mixture& mix = rates.mixture();
   SonineTracerSums sum;
   sum.C.modes = modes;
-  for (std::size_t i = 0; i < mix.size(); ++i) {
-    const double s = mix.sigma(k, i);
-    const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], modes);
+  for (std::size_t i = 0; i < rates.size(); ++i) {
+    const SonineTracerSums p = sonine_pair_sums(rates, terms, k, i, T[k], T[i], modes);
     sum.C.add(p.C);
     sum.xi += p.xi;
   }
@@ -178,14 +183,10 @@ void SonineDecay::update(const double* T) const {
   if (N > pair_cache_species) {
     for (std::size_t k = 0; k < N; ++k) sums_[k] = sonine2_tracer_sums(rates_, *terms_, k, T, modes_);
   } else {
-    const model::Mixture& mix = rates_.mixture();
     pairs_.resize(N * N);
     for (std::size_t k = 0; k < N; ++k)
-      for (std::size_t i = 0; i < N; ++i) {
-        if (known && T[k] == T_[k] && T[i] == T_[i]) continue;
-        const double s = mix.sigma(k, i);
-        pairs_[k * N + i] = terms_->tracer(k, i, mix[i].density * s * s * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], modes_);
-      }
+      for (std::size_t i = 0; i < N; ++i)
+        if (!known || T[k] != T_[k] || T[i] != T_[i]) pairs_[k * N + i] = sonine_pair_sums(rates_, *terms_, k, i, T[k], T[i], modes_);
     for (std::size_t k = 0; k < N; ++k) {  // as sonine2_tracer_sums: from zero, partners in order
       SonineTracerSums& sum = sums_[k];
       sum = SonineTracerSums{};

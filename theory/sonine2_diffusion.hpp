@@ -56,6 +56,9 @@ struct SonineTracerSums {
 };
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes = 2);
 class SoninePairTerms;
+// One partner i of k at T_k, T_i through the pair terms (weight n_i σ_ki² χ_ki): the summand of the sums below.
+SonineTracerSums sonine_pair_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk,
+                                  double Ti, std::size_t modes);
 // The same with the pair terms made once by the caller (make_sonine_pair_terms; for ODE right-hand sides).
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
                                      std::size_t modes = 2);

@@ -35,9 +35,7 @@ TracerLimit sonine_settled(const CollisionRates& r, bool maxwell) {
 // D_k[M]/D_k[1] of species k colliding with partner i only, at T_k, T_i (ζ = that pair's Maxwellian ξ_ki).
 double pair_sonine_factor(const CollisionRates& r, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk, double Ti,
                           std::size_t modes) {
-  const model::Mixture& mix = r.mixture();
-  const double s = mix.sigma(k, i);
-  const SonineTracerSums p = terms.tracer(k, i, mix[i].density * s * s * r.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti, modes);
+  const SonineTracerSums p = sonine_pair_sums(r, terms, k, i, Tk, Ti, modes);
   const double f = sonine_factor(p.C, p.xi);
   return std::isfinite(f) ? f : 1.0;
 }

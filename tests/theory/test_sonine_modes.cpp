@@ -93,7 +93,7 @@ double oracle_D(const SonineCollisionIntegrals& C, double xi, double zeta, doubl
   for (int p = 0; p < M; ++p) {
     for (int q = 0; q < M; ++q) A(p, q) = C(p, q) / N[q];
     A(p, p) -= 0.5 * xi * (2 * p + 1) + 0.5 * (zeta - xi);
-    if (p > 0) A(p, p - 1) += 0.5 * xi * (2 * p + 3) * N[p - 1] / N[p - 1];
+    if (p > 0) A(p, p - 1) += 0.5 * xi * (2 * p + 3);  // −(ξ/2)M_{p,p−1}/N_{p−1}
   }
   Eigen::VectorXd s = Eigen::VectorXd::Zero(M);
   s[0] = 3 * T_over_m;
