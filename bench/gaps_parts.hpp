@@ -1,7 +1,8 @@
 #pragma once
 // The two halves of `granmix bench gaps` (issue 12, item 1: why the papers' theory and the exact DSMC
-// differ): the light species of v1 Fig. 2 (gaps_light.cpp) and the heavy rare species of v1 Fig. 8
-// (gaps_heavy.cpp), plus helpers both use.
+// differ): the light species of v1 Fig. 2 (gaps_light.cpp), the heavy rare species of v1 Fig. 8
+// (gaps_heavy.cpp) and the kinetic level's temperatures against the DSMC's cumulants (gaps_cumulant.cpp),
+// plus helpers they use.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -62,5 +63,8 @@ GapsPart light_gaps(const StudyOptions& o);
 // bo1-fig08 (θ = 3) at several N: per (N, t, species) temperatures, MSD ratios and their causes;
 // `replicas` gets per-replica values at the last time.
 GapsPart heavy_gaps(const StudyOptions& o, model::Table& replicas);
+// v1 Figs. 2, 9, 10 (from o.scenes_folder; none without it): per (scene, t, species) the DSMC's T_k and c_k,
+// the kinetic level's, and T_k from the first-Sonine rates driven by the measured c_k(t).
+GapsPart cumulant_gaps(const StudyOptions& o);
 
 }  // namespace granmix::bench

@@ -4,6 +4,8 @@
 //   gaps_fig08.tsv     bo1-fig08 at N = 5e4, 1e5, 2e5: per (N, t, species) T, MSD ratio and their factors
 //   gaps_replicas.tsv  bo1-fig08 at the last time: one row per (N, replica, species)
 //   gaps_znull.tsv     the scene's z-score for species of n particles over R replicas under the null
+//   gaps_cumulant.tsv  v1 Figs. 2, 9, 10: T_k and c_k of DSMC and of the kinetic level, and T_k from the
+//                      first-Sonine rates driven by the measured c_k(t) (gaps_cumulant.cpp)
 // The figure: DSMC MSD over Eq. 17 for bo1-fig02's species, and the light species' MSD rebuilt from
 // measured inputs step by step (gaps_light.cpp), over Eq. 17.
 #include <fmt/format.h>
@@ -47,6 +49,10 @@ StudyResult gaps_study(const StudyOptions& o) {
                                           n, R, q.q025, q.q975, q.q005, q.q995, q.p_above4, q.p_below4));
     }
   out.tables.push_back({"gaps_znull", std::move(z)});
+  GapsPart cumulant = cumulant_gaps(o);
+  out.summary.insert(out.summary.end(), cumulant.summary.begin(), cumulant.summary.end());
+  out.json.insert(out.json.end(), cumulant.json.begin(), cumulant.json.end());
+  out.tables.push_back({"gaps_cumulant", std::move(cumulant.table)});
   return out;
 }
 
