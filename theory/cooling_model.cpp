@@ -15,7 +15,7 @@ void MaxwellClosures::rates(const double* T, const double*, double* xi, double*)
 }
 
 void VelocityDecay::correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
-                                      double* nu) const {
+                                      double* nu, const double*, const double*) const {
   rates(T, xi, nu);
   for (std::size_t k = 0; k < r.size(); ++k) dQ[k] = 3.0 * T[k] / r.mixture()[k].mass - Q[k] * nu[k];
 }

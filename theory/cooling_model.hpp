@@ -24,6 +24,11 @@ class CoolingModel {
   virtual void initial_state(const double* /*T0*/, double /*rtol*/, double* /*z*/, double* /*atol*/) const {}
   // ξ_k at temperatures T (and z), and dz/dt (state_size() values; untouched when 0).
   virtual void rates(const double* T, const double* z, double* xi, double* dz_dt) const = 0;
+  // The cumulants c_k = 2a₂,k (physics.md §6) at temperatures T and unknowns z (TemperatureHistory::states)
+  // into c; false (c untouched) for a closure without them (Maxwellian: c_k = 0).
+  virtual bool cumulants(const double* /*T*/, const double* /*z*/, double* /*c*/) const { return false; }
+  // The third Sonine coefficients a₃,k from the unknowns z; false (a3 untouched) for a closure without them.
+  virtual bool third_sonine(const double* /*z*/, double* /*a3*/) const { return false; }
 };
 
 class VelocityDecay {
@@ -34,10 +39,10 @@ class VelocityDecay {
   // Unknowns per species of the velocity correlation: Q_k = ⟨Δr_k·v_k⟩ and modes() − 1 more.
   virtual std::size_t modes() const { return 1; }
   // dQ/dt of the modes() blocks of N unknowns in Q (block 0: Q_k; d⟨R_k²⟩/dt = 2Q_k) at temperatures T and
-  // cooling rates ξ_k = −d ln T_k/dt. Default, one mode: dQ_k/dt = 3T_k/m_k − ν_k Q_k with ν_k of rates();
-  // nu: N values of scratch.
+  // cooling rates ξ_k = −d ln T_k/dt, and the species' Sonine coefficients a2, a3 of the cooling closure (null:
+  // Maxwellian). Default, one mode: dQ_k/dt = 3T_k/m_k − ν_k Q_k with ν_k of rates(); nu: N values of scratch.
   virtual void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
-                                 double* nu) const;
+                                 double* nu, const double* a2, const double* a3) const;
 };
 
 // The paper level, both closures in one object: ξ_k of v1 (A2) (= Garzó–Dufty at a₂ = 0) and

@@ -38,10 +38,12 @@ const ModeMatrices& mode_matrices() {
   return m;
 }
 
-// The table's rows with p, q < M grouped for the ODE right-hand sides (made once per M): per entry of C and
-// power of a, the polynomial in β (Horner; 64 groups of 170 rows at M = 4).
+// The table's rows with p, q < M grouped for the ODE right-hand sides (made once per M): per source, entry of C
+// and power of a, the polynomial in β (Horner; 64 groups of 170 rows per source at M = 4). Rows are sorted by
+// source, so the Maxwellian groups come first.
+constexpr int a_lowest = 4, a_highest = 11;  // the table's powers of a: index a_lowest + ia
 struct CpqGroup {
-  unsigned entry, a_index, degree;
+  unsigned source, entry, a_index, degree;
   std::array<double, 2 * MM> beta{};  // coefficients of β^0 … β^degree
 };
 const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
@@ -50,9 +52,11 @@ const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
     for (std::size_t M = 1; M <= MM; ++M)
       for (const SonineCpqTerm& r : sonine_cpq_terms) {
         if (std::size_t(r.p) >= M || std::size_t(r.q) >= M) continue;
-        const unsigned entry = unsigned(r.p * MM + r.q), a_index = unsigned(int(MM) + r.ia);
-        if (g[M].empty() || g[M].back().entry != entry || g[M].back().a_index != a_index) g[M].push_back({entry, a_index, 0, {}});
-        g[M].back().beta.at(std::size_t(r.ib)) = r.coefficient;  // rows sorted by p, q, ia, ib
+        const unsigned source = unsigned(r.source), entry = unsigned(r.p * MM + r.q), a_index = unsigned(a_lowest + r.ia);
+        if (g[M].empty() || g[M].back().source != source || g[M].back().entry != entry || g[M].back().a_index != a_index)
+          g[M].push_back({source, entry, a_index, 0, {}});
+        if (r.ia < -a_lowest || r.ia > a_highest) throw std::logic_error("sonine_cpq_table: power of a out of range");
+        g[M].back().beta.at(std::size_t(r.ib)) = r.coefficient;  // rows sorted by source, p, q, ia, ib
         g[M].back().degree = std::max(g[M].back().degree, unsigned(r.ib));
       }
     return g;
@@ -61,6 +65,29 @@ const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
 }
 
 using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, int(MM), int(MM)>;
+
+// C_pq of one pair per source (0: Maxwellian partner; 1, 2: the coefficients of the partner's a₂, a₃), sources < n.
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> pair_integrals(double weight, double mu, double eps, double Ak, double Ai,
+                                                                        std::size_t modes, unsigned n) {
+  if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
+  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
+  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
+  std::array<double, a_lowest + a_highest + 1> apow{};  // a^(j − a_lowest)
+  apow[a_lowest] = 1.0;
+  for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
+  for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
+  std::array<SonineCollisionIntegrals, sonine_cpq_sources> C;
+  for (auto& c : C) c.modes = modes;
+  for (const CpqGroup& g : cpq_groups(modes)) {
+    if (g.source >= n) break;
+    double poly = g.beta[g.degree];
+    for (unsigned j = g.degree; j-- > 0;) poly = poly * b + g.beta[j];
+    C[g.source].c[g.entry] += poly * apow[g.a_index];
+  }
+  for (unsigned src = 0; src < n; ++src)
+    for (double& x : C[src].c) x *= bP;
+  return C;
+}
 
 }  // namespace
 
@@ -74,29 +101,19 @@ double sonine_scaling_matrix(std::size_t p, std::size_t q) { return mode_matrice
 // Maxwellians and σ̂; elastic equal temperatures: C symmetric after the norms (self-adjoint operator);
 // elastic Lorentz gas (a = 1, β = 2): D[2]/D[1] = 13/12.
 SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai, std::size_t modes) {
-  if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
-  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
-  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
-  std::array<double, 3 * MM> apow{};  // a^(j − MM) (the table's ia is −4 … 8; ib ≤ 8)
-  apow[MM] = 1.0;
-  for (std::size_t j = MM + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
-  for (std::size_t j = MM; j-- > 0;) apow[j] = apow[j + 1] / a;
-  SonineCollisionIntegrals C;
-  C.modes = modes;
-  for (const CpqGroup& g : cpq_groups(modes)) {
-    double poly = g.beta[g.degree];
-    for (unsigned j = g.degree; j-- > 0;) poly = poly * b + g.beta[j];
-    C.c[g.entry] += poly * apow[g.a_index];
-  }
-  for (double& x : C.c) x *= bP;
-  return C;
+  return pair_integrals(weight, mu, eps, Ak, Ai, modes, 1)[0];
+}
+
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_by_source(double weight, double mu, double eps, double Ak,
+                                                                                        double Ai, std::size_t modes) {
+  return pair_integrals(weight, mu, eps, Ak, Ai, modes, sonine_cpq_sources);
 }
 
 SonineTracerSums sonine_pair_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk,
-                                  double Ti, std::size_t modes) {
+                                  double Ti, std::size_t modes, bool partner_sonine) {
   const model::Mixture& mix = rates.mixture();
   const double s = mix.sigma(k, i);
-  return terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti, modes);
+  return terms.tracer(k, i, mix[i].density * s * s * rates.chi(k, i), mix[k].mass, mix[i].mass, Tk, Ti, modes, partner_sonine);
 }
 
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
@@ -166,8 +183,11 @@ double kinetic_velocity_decay_rate(const CollisionRates& rates, std::size_t k, c
   return kinetic_velocity_decay_rate(rates, *make_sonine_pair_terms(rates.law()), k, T, modes);
 }
 
-SonineDecay::SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms)
-    : rates_(rates), modes_(modes), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {
+SonineDecay::SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms, bool shaped)
+    : rates_(rates),
+      modes_(modes),
+      terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())),
+      partner_sonine_(shaped && !rates.law().is_viscoelastic() && rates.size() <= pair_cache_species) {
   if (modes < 2 || modes > MM) throw std::invalid_argument("SonineDecay: modes must be 2 to 5");
 }
 
@@ -186,7 +206,8 @@ void SonineDecay::update(const double* T) const {
     pairs_.resize(N * N);
     for (std::size_t k = 0; k < N; ++k)
       for (std::size_t i = 0; i < N; ++i)
-        if (!known || T[k] != T_[k] || T[i] != T_[i]) pairs_[k * N + i] = sonine_pair_sums(rates_, *terms_, k, i, T[k], T[i], modes_);
+        if (!known || T[k] != T_[k] || T[i] != T_[i])
+          pairs_[k * N + i] = sonine_pair_sums(rates_, *terms_, k, i, T[k], T[i], modes_, partner_sonine_);
     for (std::size_t k = 0; k < N; ++k) {  // as sonine2_tracer_sums: from zero, partners in order
       SonineTracerSums& sum = sums_[k];
       sum = SonineTracerSums{};
@@ -198,23 +219,39 @@ void SonineDecay::update(const double* T) const {
   T_.assign(T, T + N);
 }
 
-void SonineDecay::correlation_rates(const CollisionRates&, const double* T, const double*, const double* Q, double* dQ, double*) const {
+void SonineDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q, double* dQ, double*,
+                                    const double* a2, const double* a3) const {
   const std::size_t N = rates_.size(), M = modes_;
   update(T);
+  // With the cooling closure's a₂ (and a₃) and partner terms: the non-Maxwellian problem (see the header).
+  const bool shaped = a2 && partner_sonine_;
   for (std::size_t k = 0; k < N; ++k) {
     const SonineTracerSums& s = sums_[k];
+    const double v2 = 2.0 * T[k] / rates_.mixture()[k].mass;
     if (!diffusive_[k]) {  // no diffusive solution: first-Sonine ν_k, the other modes decoupled
       const double nu1 = 0.5 * s.xi + rates_.inv_tau_v_species(k, T);
       dQ[k] = 3.0 * T[k] / rates_.mixture()[k].mass - nu1 * Q[k];
       for (std::size_t p = 1; p < M; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
       continue;
     }
+    SonineCollisionIntegrals C = s.C;
+    std::array<double, MM> source{};  // ⟨c² S_p(c²)⟩ over f_k beyond p = 0: N_p(δ_pq − δ_p,q−1) per a_kq (L_q^(1/2) = L_q^(3/2) − L_{q−1}^(3/2))
+    double zeta = s.xi;  // the scaling rate of the same closure as C_pq: Maxwellian sums, or the level's ζ_k with the a's
+    if (shaped) {
+      for (std::size_t i = 0; i < N; ++i) {
+        const SonineTracerSums& pair = pairs_[k * N + i];
+        C.add(pair.C_partner[0], a2[i]);
+        if (a3) C.add(pair.C_partner[1], a3[i]);
+      }
+      const double a[MM + 1] = {0.0, 0.0, a2[k], a3 ? a3[k] : 0.0};  // a_kq, q ≤ MM
+      for (std::size_t p = 1; p < M; ++p) source[p] = sonine_mode_norm(p) * (a[p] - a[p + 1]);
+      zeta = xi[k];
+    }
     std::array<double, MM> b{};
     for (std::size_t q = 0; q < M; ++q) b[q] = Q[q * N + k] / sonine_mode_norm(q);
     for (std::size_t p = 0; p < M; ++p) {
-      // The scaling terms with ξ_k of the same Maxwellian sums as C_pq (see the header).
-      double d = (p == 0 ? 3.0 * T[k] / rates_.mixture()[k].mass : 0.0) - 0.5 * s.xi * Q[p * N + k];
-      for (std::size_t q = 0; q < M; ++q) d -= (s.C(p, q) - 0.5 * s.xi * sonine_scaling_matrix(p, q)) * b[q];
+      double d = (p == 0 ? 3.0 * T[k] / rates_.mixture()[k].mass : v2 * source[p]) - 0.5 * zeta * Q[p * N + k];
+      for (std::size_t q = 0; q < M; ++q) d -= (C(p, q) - 0.5 * zeta * sonine_scaling_matrix(p, q)) * b[q];
       dQ[p * N + k] = d;
     }
   }

@@ -19,6 +19,7 @@
 
 #include "collision_rates.hpp"
 #include "cooling_model.hpp"
+#include "sonine_cpq_table.hpp"
 
 namespace granmix::theory {
 
@@ -45,6 +46,10 @@ double sonine_scaling_matrix(std::size_t p, std::size_t q);
 // One pair (k, i) at constant restitution: weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i+m_k), eps = ε_ki,
 // Ak = T_k/m_k, Ai = T_i/m_i; p, q < modes (≤ max_sonine_modes).
 SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double eps, double Ak, double Ai, std::size_t modes = 2);
+// The same with a non-Maxwellian partner, f_i = f_M,i[1 + a_i2 S₂(c_i²) + a_i3 S₃(c_i²)] (scalar Sonine, L^(1/2)):
+// [0] the Maxwellian C_pq, [1], [2] the coefficients of a_i2, a_i3 (linear in them; sonine_cpq_table.hpp).
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_by_source(double weight, double mu, double eps, double Ak,
+                                                                                        double Ai, std::size_t modes);
 
 // The sums over all partners of k and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
 // ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], exactly 0 for ε = 1, T_i = T_k): closed forms at
@@ -53,12 +58,14 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
 struct SonineTracerSums {
   SonineCollisionIntegrals C;
   double xi = 0.0;
+  // Asked for with partner_sonine (constant ε only; zero otherwise): the coefficients of the partner's a₂, a₃ in C.
+  std::array<SonineCollisionIntegrals, 2> C_partner{};
 };
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, std::size_t k, const double* T, std::size_t modes = 2);
 class SoninePairTerms;
 // One partner i of k at T_k, T_i through the pair terms (weight n_i σ_ki² χ_ki): the summand of the sums below.
 SonineTracerSums sonine_pair_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, std::size_t i, double Tk,
-                                  double Ti, std::size_t modes);
+                                  double Ti, std::size_t modes, bool partner_sonine = false);
 // The same with the pair terms made once by the caller (make_sonine_pair_terms; for ODE right-hand sides).
 SonineTracerSums sonine2_tracer_sums(const CollisionRates& rates, const SoninePairTerms& terms, std::size_t k, const double* T,
                                      std::size_t modes = 2);
@@ -102,15 +109,23 @@ double kinetic_velocity_decay_rate(const CollisionRates& rates, const SoninePair
 // Where the truncated problem has no diffusive solution (sonine_factor NaN, a large rare grain near the
 // Santos–Dufty edge) species k keeps one mode at the first-Sonine ν_k and its other modes relax at ν_k,
 // decoupled.
+// Non-Maxwellian species (shaped; the cooling closure's a₂, a₃ given, constant ε, up to pair_cache_species species):
+// f_k = f_M,k[1 + a_k2 S₂(c²) + a_k3 S₃(c²)] (scalar Sonine, L^(1/2)) changes two things. The streaming source
+// ⟨v² S_p(c²)⟩ = (2T_k/m_k)⟨c² S_p⟩ over f_k gains N_p(a_kp − a_k,p+1) for p ≥ 1 (L_q^(1/2) = L_q^(3/2) −
+// L_{q−1}^(3/2), so ⟨c² S_p S_q^(1/2)⟩ = N_p(δ_pq − δ_p,q−1)); and the partners' collision integrals become
+// C_pq + Σ_i (a_i2 C_pq^(2) + a_i3 C_pq^(3)) (sonine_pair_integrals_by_source; linear in the a's, as the cooling
+// closure is). The scaling terms then take the level's ζ_k = −d ln T_k/dt: the rate of the same a's, so the
+// closure is consistent at O(a) again. The settled D (sonine_factor, diffusion_at) stays at a = 0.
 class SonineDecay final : public VelocityDecay {
  public:
   // terms: pair terms shared with the cooling closure (null: the law's own). modes: 2 … max_sonine_modes.
-  SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms = nullptr);
+  // shaped: the species' a₂, a₃ (from the cooling closure) in the source and the partners' C_pq (below).
+  SonineDecay(const CollisionRates& rates, std::size_t modes, std::shared_ptr<const SoninePairTerms> terms = nullptr, bool shaped = false);
   // The one-mode equivalent ν_eff,k of kinetic_velocity_decay_rate (same long-time D).
   void rates(const double* T, const double*, double* nu) const override;
   std::size_t modes() const override { return modes_; }
-  void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
-                         double* nu) const override;
+  void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ, double* nu,
+                         const double* a2, const double* a3) const override;
 
  private:
   // Per species at the temperatures of the last call: the sums and whether the problem is diffusive. CVODE's
@@ -123,6 +138,7 @@ class SonineDecay final : public VelocityDecay {
   const CollisionRates& rates_;
   std::size_t modes_;
   std::shared_ptr<const SoninePairTerms> terms_;
+  bool partner_sonine_;  // the partners' a₂, a₃ in C_pq (constant ε, pairs cached)
   mutable std::vector<double> T_;
   mutable std::vector<SonineTracerSums> pairs_, sums_;
   mutable std::vector<char> diffusive_;

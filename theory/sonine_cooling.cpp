@@ -47,13 +47,14 @@ void SonineCooling::rates(const double* T, const double* z, double* xi, double* 
   for (std::size_t k = 0; k < N_; ++k) xi[k] *= n_;
 }
 
-void SonineCooling::cumulants(const double* T, const double* z, double* c) const {
+bool SonineCooling::cumulants(const double* T, const double* z, double* c) const {
   if (mode_ == CumulantMode::relaxing) {
-    for (std::size_t k = 0; k < N_; ++k) c[k] = z[k];
-    return;
+    std::copy(z, z + N_, c);
+    return true;
   }
   assemble(T);
   system_.solve_cumulants(c);
+  return true;
 }
 
 }  // namespace granmix::theory

@@ -37,7 +37,7 @@ class SonineCooling final : public CoolingModel {
   void rates(const double* T, const double* z, double* xi, double* dz_dt) const override;
   // c_k at temperatures T and the model's unknowns z (TemperatureHistory::states): z itself when
   // relaxing, the steady cumulants when quasi-static.
-  void cumulants(const double* T, const double* z, double* c) const;
+  bool cumulants(const double* T, const double* z, double* c) const override;
 
  private:
   void assemble(const double* T) const;

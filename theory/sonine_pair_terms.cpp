@@ -19,10 +19,16 @@ class ClosedFormTerms final : public SoninePairTerms {
   SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
     return sonine_cross(w, 1.0, 1.0, law_.eps(i, j), mu_ji, lambda_i, lambda_j);
   }
-  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
-                          std::size_t modes) const override {
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
+                          bool partner_sonine) const override {
     const double eps = law_.eps(k, i);
-    SonineTracerSums s{sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes), 0.0};
+    SonineTracerSums s;
+    if (partner_sonine) {
+      const auto C = sonine_pair_integrals_by_source(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes);
+      s.C = C[0], s.C_partner = {C[1], C[2]};
+    } else {
+      s.C = sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes);
+    }
     // v1 (A2) as ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], ν_ki = (2/3)C₀₀: exactly 0 for ε = 1, T_i = T_k.
     s.xi = (2.0 / 3.0) * s.C(0, 0) * ((1.0 - eps) - (1.0 + eps) * mk * (Ti - Tk) / ((mi + mk) * Tk));
     return s;
@@ -43,8 +49,8 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
     return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
   }
-  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
-                          std::size_t modes) const override {
+  SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
+                          bool) const override {  // the partner's a₂, a₃ terms exist in closed form only (left zero)
     const double Ak = Tk / mk, Ai = Ti / mi;
     const PairSonineIntegrals q = sonine_pair_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai), modes);
     SonineTracerSums s{{}, -weight * q.energy[0] / (3.0 * Ak)};

@@ -23,9 +23,10 @@ class SoninePairTerms {
   virtual SonineMoments self(std::size_t i, double w, double lambda_i) const = 0;
   virtual SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const = 0;
   // The tracer problem of k with partner i (weight = n_i σ_ki² χ_ki, masses, temperatures): the Maxwellian
-  // C_pq (p, q < modes) and ξ_ki (v1 A2 at constant ε, its quadrature otherwise).
+  // C_pq (p, q < modes) and ξ_ki (v1 A2 at constant ε, its quadrature otherwise); with partner_sonine also the
+  // coefficients of the partner's a₂, a₃ in C_pq (closed forms at constant ε; the quadrature leaves them zero).
   virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
-                                  std::size_t modes) const = 0;
+                                  std::size_t modes, bool partner_sonine) const = 0;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

@@ -39,6 +39,7 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   work_a_.resize(N_);
   work_xi_.resize(N_);
   work_nu_.resize(N_);
+  work_a2_.resize(N_), work_a3_.resize(N_);
 
   // Clock (see the header): Haff time of the mean cooling rate, or the fastest relaxation time.
   std::vector<double> xi(N_), itau(N_), z0(nz_), z_atol(nz_), dz(nz_);
@@ -161,7 +162,15 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
     // A tagged velocity decays at ν_k (default τ_v⁻¹ + ξ_k/2, physics.md §3: (A1) is that rate minus
     // ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant. The decay model may bring
     // more modes (the kinetic level's second Sonine mode).
-    self.decay_->correlation_rates(self.rates_, T, xi, y + self.j_at_, dy + self.j_at_, self.work_nu_.data());
+    // The cooling closure's distribution shape (a₂, a₃; null when Maxwellian) for the decay's source and partners.
+    double *a2 = self.work_a2_.data(), *a3 = self.work_a3_.data();
+    const double* z = y + self.z_at_;
+    const bool shaped = self.cooling_->cumulants(T, z, a2);
+    if (shaped)
+      for (std::size_t k = 0; k < N; ++k) a2[k] *= 0.5;
+    const bool third = shaped && self.cooling_->third_sonine(z, a3);
+    self.decay_->correlation_rates(self.rates_, T, xi, y + self.j_at_, dy + self.j_at_, self.work_nu_.data(), shaped ? a2 : nullptr,
+                                   third ? a3 : nullptr);
     for (std::size_t k = 0; k < N; ++k) dy[self.r2_at_ + k] = 2.0 * y[self.j_at_ + k] * dt_ds;
     for (std::size_t j = 0; j < self.decay_->modes() * N; ++j) dy[self.j_at_ + j] *= dt_ds;
   }

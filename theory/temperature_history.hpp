@@ -100,7 +100,7 @@ class TemperatureHistory {
   std::vector<double> y0_;
   SolverStats stats_;
   std::exception_ptr rhs_error_;
-  mutable std::vector<double> work_T_, work_a_, work_xi_, work_nu_;
+  mutable std::vector<double> work_T_, work_a_, work_xi_, work_nu_, work_a2_, work_a3_;
 };
 
 }  // namespace granmix::theory

@@ -10,6 +10,8 @@
 #include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
+#include "sonine_moment_cooling.hpp"
+#include "sonine_moment_table.hpp"
 #include "sonine_pair_terms.hpp"
 #include "sonine_tracer.hpp"
 
@@ -50,6 +52,20 @@ class PaperLevel final : public TheoryLevel {
 // t = 10 (the lightest species), the model error its scenes judge with.
 constexpr std::size_t max_sonine_species = 1000;
 
+// The kinetic level's cooling closure: the first Sonine (a₂ relaxing; sonine_cooling.hpp, its pair terms by
+// quadrature over the impact speed for a viscoelastic law), or with cooling_order 3 a₂ and a₃ relaxing
+// (sonine_moment_cooling.hpp) — at constant ε (closed forms at fixed ε only) and up to max_third_sonine_species,
+// above which its pair terms (15 polynomials per ordered pair at every new temperature set, the Krylov solver's
+// products included) cost 33 s on v2 Fig. 6's 691 species against the first Sonine's 7 s. z0: the initial
+// unknowns (empty: the Maxwellian start).
+constexpr std::size_t max_third_sonine_species = 100;
+std::shared_ptr<const CoolingModel> kinetic_cooling(const CollisionRates& rates, std::vector<double> z0,
+                                                    std::shared_ptr<const SoninePairTerms> terms, int cooling_order) {
+  if (cooling_order < 3 || rates.law().is_viscoelastic() || rates.size() > max_third_sonine_species)
+    return std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::move(z0), std::move(terms));
+  return std::make_shared<SonineMomentCooling>(rates, sonine_moment_max, std::move(z0));
+}
+
 bool dissipative(const model::Restitution& law, std::size_t k, std::size_t i) {
   return law.is_viscoelastic() ? law.akappa(k, i) > 0.0 : law.eps(k, i) < 1.0;
 }
@@ -66,9 +82,13 @@ bool sonine_applies(const CollisionRates& rates) {
 // "kinetic-sonineN" the same level with D_k[N] — N = 1: one VACF mode at ν_k = τ_v,k⁻¹ + ζ_k/2, D_k[1]
 // settled. A lower order's difference to the kinetic level is the size of its last Sonine corrections
 // (a scene's correction_from = "sonineN").
+// Two variants beyond it, not the judged default (README, "Temperatures at Sonine order 3"): "kinetic-cooling3"
+// (cooling_order 3: a₂ and a₃ relaxing, sonine_moment_cooling.hpp; its temperatures follow DSMC closer) and
+// "kinetic-cooling3-shaped" (also the species' a₂, a₃ in the velocity modes, SonineDecay's shaped form).
 class KineticLevel final : public TheoryLevel {
  public:
-  explicit KineticLevel(std::size_t order) : order_(order), name_(order == kinetic_sonine_order ? "kinetic" : "kinetic-sonine" + std::to_string(order)) {}
+  KineticLevel(std::size_t order, int cooling_order = 2, bool shaped = false)
+      : order_(order), cooling_order_(cooling_order), shaped_(shaped), name_(level_name(order, cooling_order, shaped)) {}
   const char* name() const override { return name_.c_str(); }
   MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
@@ -76,8 +96,8 @@ class KineticLevel final : public TheoryLevel {
     // One set of pair terms for both closures: a viscoelastic law's ε at the impact speeds is evaluated once
     // per pair and right-hand side.
     const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(rates.law());
-    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::vector<double>{}, terms);
-    if (order_ > 1) opt.decay = std::make_shared<SonineDecay>(rates, order_, terms);
+    opt.cooling = kinetic_cooling(rates, {}, terms, cooling_order_);
+    if (order_ > 1) opt.decay = std::make_shared<SonineDecay>(rates, order_, terms, shaped_);
   }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
@@ -101,7 +121,7 @@ class KineticLevel final : public TheoryLevel {
                                            TemperatureOptions& opt) const override {
     if (init.kind != model::InitialState::Kind::aged || !sonine_applies(rates)) return theory::initial_temperatures(init, rates);
     const AgedState a = aged_state(init.T_hot, rates, opt);
-    opt.cooling = std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, a.z);
+    opt.cooling = kinetic_cooling(rates, a.z, make_sonine_pair_terms(rates.law()), cooling_order_);
     return a.T;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
@@ -111,7 +131,13 @@ class KineticLevel final : public TheoryLevel {
   TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, order_}); }
 
  private:
+  static std::string level_name(std::size_t order, int cooling_order, bool shaped) {
+    if (cooling_order == 3) return shaped ? "kinetic-cooling3-shaped" : "kinetic-cooling3";
+    return order == kinetic_sonine_order ? "kinetic" : "kinetic-sonine" + std::to_string(order);
+  }
   std::size_t order_;
+  int cooling_order_;
+  bool shaped_;
   std::string name_;
 };
 
@@ -120,9 +146,11 @@ class KineticLevel final : public TheoryLevel {
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "paper") return std::make_unique<PaperLevel>();
   if (name == "kinetic") return std::make_unique<KineticLevel>(kinetic_sonine_order);
+  if (name == "kinetic-cooling3") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3);
+  if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
   for (std::size_t n = 1; n <= max_sonine_modes; ++n)
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-shaped)");
 }
 
 }  // namespace granmix::theory

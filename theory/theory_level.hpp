@@ -7,7 +7,8 @@
 //            by the velocity-autocorrelation ODE (§2) with kinetic_sonine_order = 4 Sonine modes per species
 //            (SonineDecay: first-Sonine ν_k at short times, D to Sonine order 4 at long times, §3), settled states of the
 //            first-Sonine HCS (MG App. A); for a viscoelastic law the same integrals by quadrature over the
-//            impact speed (sonine_quadrature.hpp).
+//            impact speed (sonine_quadrature.hpp). Variants: kinetic-sonineN (D to order N), kinetic-cooling3
+//            (temperatures with a₂ and a₃, sonine_moment_cooling.hpp), kinetic-cooling3-shaped (and the a's in D).
 // Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
 // Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
 // D to Sonine order 4); both give the MSD and the TAMSD from one velocity correlation in closed form (the

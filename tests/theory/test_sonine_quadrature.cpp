@@ -68,7 +68,7 @@ TEST_CASE("Sonine quadrature: at a_2 = 0 a viscoelastic pair gives v1's xi_ki an
   for (std::size_t k = 0; k < 3; ++k)
     for (std::size_t i = 0; i < 3; ++i) {
       const double s = mix.sigma(k, i);
-      const SonineTracerSums p = terms->tracer(k, i, mix[i].density * s * s, mix[k].mass, mix[i].mass, T[k], T[i], 2);
+      const SonineTracerSums p = terms->tracer(k, i, mix[i].density * s * s, mix[k].mass, mix[i].mass, T[k], T[i], 2, false);
       const double xi = r.xi(k, i, T[k], T[i]), nu = r.inv_tau_v(k, i, T[k], T[i]) + 0.5 * xi;
       worst = std::max({worst, rel(p.xi, xi, 1e-3 * nu), rel(2.0 / 3.0 * p.C(0, 0), nu, 0.0)});
     }

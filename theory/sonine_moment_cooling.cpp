@@ -1,0 +1,163 @@
+#include "sonine_moment_cooling.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+
+#include "sonine_moment_table.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+constexpr int PM = sonine_moment_max, NS = sonine_moment_sources;
+constexpr int a_offset = 4, a_powers = 12, beta_terms = 10;  // a^(j − 4), j < 12; β^0 … β^9
+
+// The table's rows of one (p, source, power of a), their β coefficients for Horner.
+struct Group {
+  int entry, a_index, degree = 0;
+  std::array<double, beta_terms> beta{};
+};
+const std::vector<Group>& groups() {
+  static const std::vector<Group> g = [] {
+    std::vector<Group> out;
+    for (const SonineMomentTerm& r : sonine_moment_terms) {
+      const int entry = (r.p - 1) * NS + r.source, a_index = r.ia + a_offset;
+      if (a_index < 0 || a_index >= a_powers || r.ib >= beta_terms) throw std::logic_error("sonine_moment_table: power out of range");
+      if (out.empty() || out.back().entry != entry || out.back().a_index != a_index) out.push_back({entry, a_index});
+      out.back().beta[std::size_t(r.ib)] = r.coefficient;  // rows sorted by p, source, ia, ib
+      out.back().degree = std::max(out.back().degree, r.ib);
+    }
+    return out;
+  }();
+  return g;
+}
+
+// The β polynomials of every group at one pair's β (constant in time: masses and ε).
+std::vector<double> beta_polynomials(double beta) {
+  std::vector<double> out;
+  for (const Group& g : groups()) {
+    double poly = g.beta[std::size_t(g.degree)];
+    for (int j = g.degree; j-- > 0;) poly = poly * beta + g.beta[std::size_t(j)];
+    out.push_back(poly);
+  }
+  return out;
+}
+
+// H(p; source) of one ordered pair from its β polynomials, times β P: the rates of ⟨c^(2p)⟩_k per unit
+// Sonine coefficient.
+std::array<double, PM * NS> pair_moments(const double* poly, double a, double bP) {
+  std::array<double, a_powers> apow{};
+  apow[a_offset] = 1.0;
+  for (int j = a_offset + 1; j < a_powers; ++j) apow[std::size_t(j)] = apow[std::size_t(j - 1)] * a;
+  for (int j = a_offset; j-- > 0;) apow[std::size_t(j)] = apow[std::size_t(j + 1)] / a;
+  std::array<double, PM * NS> H{};
+  const std::vector<Group>& g = groups();
+  for (std::size_t j = 0; j < g.size(); ++j) H[std::size_t(g[j].entry)] += poly[j] * apow[std::size_t(g[j].a_index)];
+  for (double& x : H) x *= bP;
+  return H;
+}
+
+}  // namespace
+
+std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai) {
+  const double V = Ak + Ai, beta = mu * (1.0 + eps);
+  return pair_moments(beta_polynomials(beta).data(), Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
+}
+
+namespace {
+
+// ⟨c⁴⟩ = M2 (1 + a₂), ⟨c⁶⟩ = M3 (1 + 3a₂ − a₃) over f_M (1 + a₂S₂ + a₃S₃): Γ(p + 3/2)/Γ(3/2) and ⟨c^(2p) S_q⟩.
+constexpr double M1 = 1.5, M2 = 15.0 / 4.0, M3 = 105.0 / 8.0;
+
+}  // namespace
+
+SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0)
+    : rates_(rates), order_(order), N_(rates.size()), z0_(std::move(z0)) {
+  if (order < 2 || order > PM) throw std::invalid_argument("Sonine moment cooling: order must be 2 or 3");
+  if (rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine moment cooling: constant restitution only (closed forms at fixed ε)");
+  if (z0_.empty()) z0_.assign(state_size(), 0.0);
+  if (z0_.size() != state_size()) throw std::invalid_argument("Sonine moment cooling: initial state needs (order − 1) values per species");
+  // Per ordered pair the constants: β = μ_ik(1 + ε_ki), its polynomials, and β n_i σ_ki² χ_ki √(2π) (P without √V).
+  const model::Mixture& mix = rates.mixture();
+  for (std::size_t k = 0; k < N_; ++k)
+    for (std::size_t i = 0; i < N_; ++i) {
+      const double beta = mix[i].mass / (mix[i].mass + mix[k].mass) * (1.0 + rates.law().eps(k, i)), sigma = mix.sigma(k, i);
+      const std::vector<double> poly = beta_polynomials(beta);
+      polys_.insert(polys_.end(), poly.begin(), poly.end());
+      bP_.push_back(beta * mix[i].density * sigma * sigma * rates.chi(k, i) * std::sqrt(2.0 * std::numbers::pi));
+    }
+}
+
+void SonineMomentCooling::assemble(const double* T) const {
+  // The pair terms depend on T only: CVODE's difference-quotient Jacobian perturbs one unknown at a time, and for
+  // the a's, MSDs and VACF modes (most columns) T is bitwise the same as at the last call.
+  if (assembled_ && std::equal(T, T + N_, assembled_T_.begin())) return;
+  assembled_T_.assign(T, T + N_), assembled_ = true;
+  const model::Mixture& mix = rates_.mixture();
+  R0_.assign(N_ * PM, 0.0), self_.assign(N_ * PM * 2, 0.0), partner_.resize(N_ * N_ * PM * 2);
+  for (std::size_t k = 0; k < N_; ++k) {
+    const double theta_k = T[k] / mix[k].mass;
+    for (std::size_t i = 0; i < N_; ++i) {
+      const double V = theta_k + T[i] / mix[i].mass;
+      const std::array<double, PM * NS> H = pair_moments(&polys_[(k * N_ + i) * groups().size()], theta_k / V, bP_[k * N_ + i] * std::sqrt(V));
+      for (int p = 0; p < PM; ++p) {
+        R0_[k * PM + std::size_t(p)] += H[std::size_t(p * NS)];
+        for (std::size_t j = 0; j < 2; ++j) {
+          self_[(k * PM + std::size_t(p)) * 2 + j] += H[std::size_t(p * NS) + 1 + j];
+          partner_[((k * N_ + i) * PM + std::size_t(p)) * 2 + j] = H[std::size_t(p * NS) + 3 + j];
+        }
+      }
+    }
+  }
+}
+
+void SonineMomentCooling::initial_state(const double*, double rtol, double* z, double* atol) const {
+  // a₂, a₃ are O(0.01–0.3) and start at 0 from a Maxwellian: an absolute tolerance rtol, as for ln T.
+  for (std::size_t j = 0; j < state_size(); ++j) z[j] = z0_[j], atol[j] = rtol;
+}
+
+void SonineMomentCooling::rates(const double* T, const double* z, double* xi, double* dz_dt) const {
+  assemble(T);
+  const bool third = order_ == 3;
+  auto a2 = [&](std::size_t k) { return 0.5 * z[k]; };
+  auto a3 = [&](std::size_t k) { return third ? z[N_ + k] : 0.0; };
+  for (std::size_t k = 0; k < N_; ++k) {
+    std::array<double, PM> R1{};  // the rates' parts linear in the a's
+    for (std::size_t p = 0; p < PM; ++p) {
+      const double* s = &self_[(k * PM + p) * 2];
+      double sum = s[0] * a2(k) + s[1] * a3(k);
+      for (std::size_t i = 0; i < N_; ++i) {
+        const double* w = &partner_[((k * N_ + i) * PM + p) * 2];
+        sum += w[0] * a2(i) + w[1] * a3(i);
+      }
+      R1[p] = sum;
+    }
+    const double* R0 = &R0_[k * PM];
+    const double zeta0 = -R0[0] / M1, zeta1 = -R1[0] / M1;
+    xi[k] = zeta0 + zeta1;
+    if (!dz_dt) continue;
+    const double dM2 = R0[1] + R1[1] + 2.0 * (zeta0 * M2 * (1.0 + a2(k)) + zeta1 * M2);
+    const double da2 = dM2 / M2;
+    dz_dt[k] = 2.0 * da2;
+    if (third) {
+      const double dM3 = R0[2] + R1[2] + 3.0 * (zeta0 * M3 * (1.0 + 3.0 * a2(k) - a3(k)) + zeta1 * M3);
+      dz_dt[N_ + k] = 3.0 * da2 - dM3 / M3;
+    }
+  }
+}
+
+bool SonineMomentCooling::cumulants(const double*, const double* z, double* c) const {
+  std::copy(z, z + N_, c);
+  return true;
+}
+
+bool SonineMomentCooling::third_sonine(const double* z, double* a3) const {
+  if (order_ < 3) return false;
+  std::copy(z + N_, z + 2 * N_, a3);
+  return true;
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,57 @@
+#pragma once
+// The kinetic level's temperatures at Sonine order 3 (constant restitution): every species carries
+// a₂ and a₃, f_k = f_M,k [1 + a_k2 S₂(c²) + a_k3 S₃(c²)] (S_p = L_p^(1/2)), relaxing from the Maxwellian
+// start with the temperatures. The balances of ⟨c⁴⟩_k and ⟨c⁶⟩_k (c = v/√(2θ_k), θ = T/m) under
+// collisions and the cooling θ̇_k = −ζ_k θ_k:
+//   d⟨c^(2p)⟩_k/dt = R_kp + p ζ_k ⟨c^(2p)⟩_k,     ζ_k = −R_k1/(3/2),
+// R_kp the collisional rate at fixed θ (sonine_moment_table.hpp, linear in the a's; the product of ζ's a-part
+// with the moments' a-part is dropped, as MG's first Sonine drops it), ⟨c⁴⟩ = 15/4 (1 + a₂) and
+// ⟨c⁶⟩ = 105/8 (1 + 3a₂ − a₃). At order 2 (a₃ ≡ 0, no ⟨c⁶⟩ balance) this is MG's first Sonine, i.e.
+// SonineCooling's relaxing mode, to rounding (tested). Why order 3: DSMC's light species of v1 Figs. 2, 9, 10 run
+// 2–4% warmer than the first-Sonine rates say, and `granmix bench gaps` shows the rates are right when given the
+// measured c_k(t): it is the ⟨c⁴⟩ balance truncated at a₂ that is wrong for a species far from its partners'
+// temperature (v1 Fig. 2: first Sonine settles its c₁ at 0.038, order 3 at 0.008, DSMC at −0.005 ± 0.003).
+// Unknowns z: c_k = 2a_k2 (the cumulant, as SonineCooling's), then a_k3 (order 3). One object serves one
+// integration at a time.
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "collision_rates.hpp"
+#include "cooling_model.hpp"
+
+namespace granmix::theory {
+
+// The rates of ⟨c^(2p)⟩_k, p = 1..3, at fixed θ_k from collisions with species i, per unit Sonine coefficient:
+// entry (p − 1)·5 + source, sources Maxwell, own a₂, own a₃, partner's a₂, partner's a₃ (sonine_moment_table.hpp);
+// weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i + m_k), A = T/m of k and i.
+std::array<double, 15> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai);
+
+class SonineMomentCooling final : public CoolingModel {
+ public:
+  // order 2 or 3; z0: the initial unknowns (empty: 0, the Maxwellian start). Constant restitution only
+  // (std::invalid_argument otherwise: the table is the closed form at fixed ε).
+  SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0 = {});
+
+  int order() const { return order_; }
+  std::size_t state_size() const override { return std::size_t(order_ - 1) * N_; }
+  void initial_state(const double* T0, double rtol, double* z, double* atol) const override;
+  void rates(const double* T, const double* z, double* xi, double* dz_dt) const override;
+  bool cumulants(const double* T, const double* z, double* c) const override;
+  bool third_sonine(const double* z, double* a3) const override;
+
+ private:
+  void assemble(const double* T) const;
+
+  const CollisionRates& rates_;
+  int order_;
+  std::size_t N_;
+  std::vector<double> z0_;
+  std::vector<double> polys_, bP_;  // per ordered pair (k, i): the table's β polynomials; β n_i σ_ki² χ_ki √(2π)
+  // At the last temperatures (assemble): per species k and moment p = 1..3 the Maxwell part R0 and the
+  // coefficients of the own a₂, a₃ (self_), per pair (k, i) those of the partner's a₂, a₃ (partner_).
+  mutable std::vector<double> assembled_T_, R0_, self_, partner_;
+  mutable bool assembled_ = false;
+};
+
+}  // namespace granmix::theory
