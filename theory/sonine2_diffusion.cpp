@@ -66,27 +66,43 @@ const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
 
 using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, int(MM), int(MM)>;
 
-// C_pq of one pair per source (0: Maxwellian partner; 1, 2: the coefficients of the partner's a₂, a₃), sources < n.
-std::array<SonineCollisionIntegrals, sonine_cpq_sources> pair_integrals(double weight, double mu, double eps, double Ak, double Ai,
-                                                                        std::size_t modes, unsigned n) {
+}  // namespace
+
+std::vector<double> sonine_cpq_beta_polynomials(double beta, std::size_t modes, unsigned sources) {
   if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
-  const double V = Ak + Ai, a = Ak / V, b = mu * (1.0 + eps);
-  const double bP = b * weight * std::sqrt(2.0 * std::numbers::pi * V);
+  std::vector<double> out;
+  for (const CpqGroup& g : cpq_groups(modes)) {
+    if (g.source >= sources) break;
+    double poly = g.beta[g.degree];
+    for (unsigned j = g.degree; j-- > 0;) poly = poly * beta + g.beta[j];
+    out.push_back(poly);
+  }
+  return out;
+}
+
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_from(const std::vector<double>& polys, double weight, double beta,
+                                                                                   double Ak, double Ai, std::size_t modes, unsigned sources) {
+  const double V = Ak + Ai, a = Ak / V, bP = beta * weight * std::sqrt(2.0 * std::numbers::pi * V);
   std::array<double, a_lowest + a_highest + 1> apow{};  // a^(j − a_lowest)
   apow[a_lowest] = 1.0;
   for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
   for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
   std::array<SonineCollisionIntegrals, sonine_cpq_sources> C;
   for (auto& c : C) c.modes = modes;
-  for (const CpqGroup& g : cpq_groups(modes)) {
-    if (g.source >= n) break;
-    double poly = g.beta[g.degree];
-    for (unsigned j = g.degree; j-- > 0;) poly = poly * b + g.beta[j];
-    C[g.source].c[g.entry] += poly * apow[g.a_index];
-  }
-  for (unsigned src = 0; src < n; ++src)
+  const std::vector<CpqGroup>& groups = cpq_groups(modes);
+  for (std::size_t j = 0; j < polys.size(); ++j) C[groups[j].source].c[groups[j].entry] += polys[j] * apow[groups[j].a_index];
+  for (unsigned src = 0; src < sources; ++src)
     for (double& x : C[src].c) x *= bP;
   return C;
+}
+
+namespace {
+
+// C_pq of one pair per source (0: Maxwellian partner; 1, 2: the coefficients of the partner's a₂, a₃), sources < n.
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> pair_integrals(double weight, double mu, double eps, double Ak, double Ai,
+                                                                        std::size_t modes, unsigned n) {
+  const double beta = mu * (1.0 + eps);
+  return sonine_pair_integrals_from(sonine_cpq_beta_polynomials(beta, modes, n), weight, beta, Ak, Ai, modes, n);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <memory>
+#include <vector>
 
 #include "collision_rates.hpp"
 #include "cooling_model.hpp"
@@ -50,6 +51,11 @@ SonineCollisionIntegrals sonine2_pair_integrals(double weight, double mu, double
 // [0] the Maxwellian C_pq, [1], [2] the coefficients of a_i2, a_i3 (linear in them; sonine_cpq_table.hpp).
 std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_by_source(double weight, double mu, double eps, double Ak,
                                                                                         double Ai, std::size_t modes);
+// The same in two steps, for ODE right-hand sides: the table's polynomials in β = μ(1 + ε) (constant for a pair),
+// then the C_pq at the temperatures (the same numbers to the last bit), for the first `sources` sources.
+std::vector<double> sonine_cpq_beta_polynomials(double beta, std::size_t modes, unsigned sources);
+std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_from(const std::vector<double>& polys, double weight, double beta,
+                                                                                   double Ak, double Ai, std::size_t modes, unsigned sources);
 
 // The sums over all partners of k and, in the same pass, ξ_k = Σ_i ξ_ki (v1 Eq. A2 written as
 // ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], exactly 0 for ε = 1, T_i = T_k): closed forms at

@@ -21,21 +21,41 @@ class ClosedFormTerms final : public SoninePairTerms {
   }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
                           bool partner_sonine) const override {
-    const double eps = law_.eps(k, i);
+    const double eps = law_.eps(k, i), beta = mi / (mi + mk) * (1.0 + eps);
+    const unsigned sources = partner_sonine ? sonine_cpq_sources : 1;
+    // The β polynomials of the pair, kept up to cached_species (β, the order and the sources fixed per pair within
+    // an integration): most of a pair's cost at order 4 otherwise (v1 Fig. 8: 44% of the kinetic level's time).
+    const std::size_t N = law_.size();
+    if (N > cached_species) return finish(sonine_pair_integrals_from(sonine_cpq_beta_polynomials(beta, modes, sources), weight, beta, Tk / mk,
+                                                                      Ti / mi, modes, sources),
+                                          eps, mk, mi, Tk, Ti, partner_sonine);
+    if (polys_.empty()) polys_.resize(N * N);
+    BetaPolynomials& cached = polys_[k * N + i];
+    if (cached.beta != beta || cached.modes != modes || cached.sources != sources)
+      cached = {beta, modes, sources, sonine_cpq_beta_polynomials(beta, modes, sources)};
+    return finish(sonine_pair_integrals_from(cached.polys, weight, beta, Tk / mk, Ti / mi, modes, sources), eps, mk, mi, Tk, Ti, partner_sonine);
+  }
+
+ private:
+  static SonineTracerSums finish(const std::array<SonineCollisionIntegrals, sonine_cpq_sources>& C, double eps, double mk, double mi, double Tk,
+                                 double Ti, bool partner_sonine) {
     SonineTracerSums s;
-    if (partner_sonine) {
-      const auto C = sonine_pair_integrals_by_source(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes);
-      s.C = C[0], s.C_partner = {C[1], C[2]};
-    } else {
-      s.C = sonine2_pair_integrals(weight, mi / (mi + mk), eps, Tk / mk, Ti / mi, modes);
-    }
+    s.C = C[0];
+    if (partner_sonine) s.C_partner = {C[1], C[2]};
     // v1 (A2) as ξ_ki = ν_ki[(1−ε) − (1+ε) m_k(T_i−T_k)/((m_i+m_k)T_k)], ν_ki = (2/3)C₀₀: exactly 0 for ε = 1, T_i = T_k.
     s.xi = (2.0 / 3.0) * s.C(0, 0) * ((1.0 - eps) - (1.0 + eps) * mk * (Ti - Tk) / ((mi + mk) * Tk));
     return s;
   }
 
- private:
+  static constexpr std::size_t cached_species = 300;  // as SonineDecay's pair cache
+  struct BetaPolynomials {
+    double beta = -1.0;
+    std::size_t modes = 0;
+    unsigned sources = 0;
+    std::vector<double> polys;
+  };
   const model::Restitution& law_;
+  mutable std::vector<BetaPolynomials> polys_;  // per ordered pair (k, i), made on first use
 };
 
 class ImpactSpeedTerms final : public SoninePairTerms {
