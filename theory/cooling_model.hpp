@@ -38,6 +38,8 @@ class VelocityDecay {
   virtual void rates(const double* T, const double* xi, double* nu) const = 0;
   // Unknowns per species of the velocity correlation: Q_k = ⟨Δr_k·v_k⟩ and modes() − 1 more.
   virtual std::size_t modes() const { return 1; }
+  // Whether correlation_rates uses the species' Sonine coefficients (else they are not computed for it).
+  virtual bool uses_sonine_coefficients() const { return false; }
   // dQ/dt of the modes() blocks of N unknowns in Q (block 0: Q_k; d⟨R_k²⟩/dt = 2Q_k) at temperatures T and
   // cooling rates ξ_k = −d ln T_k/dt, and the species' Sonine coefficients a2, a3 of the cooling closure (null:
   // Maxwellian). Default, one mode: dQ_k/dt = 3T_k/m_k − ν_k Q_k with ν_k of rates(); nu: N values of scratch.

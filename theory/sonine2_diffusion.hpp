@@ -130,6 +130,7 @@ class SonineDecay final : public VelocityDecay {
   // The one-mode equivalent ν_eff,k of kinetic_velocity_decay_rate (same long-time D).
   void rates(const double* T, const double*, double* nu) const override;
   std::size_t modes() const override { return modes_; }
+  bool uses_sonine_coefficients() const override { return partner_sonine_; }
   void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ, double* nu,
                          const double* a2, const double* a3) const override;
 

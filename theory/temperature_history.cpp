@@ -165,7 +165,7 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
     // The cooling closure's distribution shape (a₂, a₃; null when Maxwellian) for the decay's source and partners.
     double *a2 = self.work_a2_.data(), *a3 = self.work_a3_.data();
     const double* z = y + self.z_at_;
-    const bool shaped = self.cooling_->cumulants(T, z, a2);
+    const bool shaped = self.decay_->uses_sonine_coefficients() && self.cooling_->cumulants(T, z, a2);
     if (shaped)
       for (std::size_t k = 0; k < N; ++k) a2[k] *= 0.5;
     const bool third = shaped && self.cooling_->third_sonine(z, a3);
