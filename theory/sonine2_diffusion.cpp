@@ -11,6 +11,7 @@
 
 #include "sonine_cpq_table.hpp"
 #include "sonine_pair_terms.hpp"
+#include "term_table.hpp"
 
 namespace granmix::theory {
 
@@ -38,28 +39,17 @@ const ModeMatrices& mode_matrices() {
   return m;
 }
 
-// The table's rows with p, q < M grouped for the ODE right-hand sides (made once per M): per source, entry of C
-// and power of a, the polynomial in β (Horner; 64 groups of 170 rows per source at M = 4). Rows are sorted by
-// source, so the Maxwellian groups come first.
-constexpr int a_lowest = 4, a_highest = 11;  // the table's powers of a: index a_lowest + ia
-struct CpqGroup {
-  unsigned source, entry, a_index, degree;
-  std::array<double, 2 * MM> beta{};  // coefficients of β^0 … β^degree
-};
-const std::vector<CpqGroup>& cpq_groups(std::size_t modes) {
+// The table's rows with p, q < M, made once per M (entry = source·MM² + p·MM + q: the Maxwellian source first).
+const TermTable& cpq_table(std::size_t modes) {
   static const auto per_modes = [] {
-    std::array<std::vector<CpqGroup>, MM + 1> g;
-    for (std::size_t M = 1; M <= MM; ++M)
-      for (const SonineCpqTerm& r : sonine_cpq_terms) {
-        if (std::size_t(r.p) >= M || std::size_t(r.q) >= M) continue;
-        const unsigned source = unsigned(r.source), entry = unsigned(r.p * MM + r.q), a_index = unsigned(a_lowest + r.ia);
-        if (g[M].empty() || g[M].back().source != source || g[M].back().entry != entry || g[M].back().a_index != a_index)
-          g[M].push_back({source, entry, a_index, 0, {}});
-        if (r.ia < -a_lowest || r.ia > a_highest) throw std::logic_error("sonine_cpq_table: power of a out of range");
-        g[M].back().beta.at(std::size_t(r.ib)) = r.coefficient;  // rows sorted by source, p, q, ia, ib
-        g[M].back().degree = std::max(g[M].back().degree, unsigned(r.ib));
-      }
-    return g;
+    std::vector<TermTable> t;
+    for (std::size_t M = 0; M <= MM; ++M) {
+      std::vector<TermTable::Term> rows;
+      for (const SonineCpqTerm& r : sonine_cpq_terms)
+        if (std::size_t(r.p) < M && std::size_t(r.q) < M) rows.push_back({unsigned((r.source * MM + r.p) * MM + r.q), r.ia, r.ib, r.coefficient});
+      t.emplace_back(rows);
+    }
+    return t;
   }();
   return per_modes[modes];
 }
@@ -70,29 +60,21 @@ using Small = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, int(MM), 
 
 std::vector<double> sonine_cpq_beta_polynomials(double beta, std::size_t modes, unsigned sources) {
   if (modes < 1 || modes > MM) throw std::invalid_argument("sonine2_pair_integrals: modes must be 1 to 5");
-  std::vector<double> out;
-  for (const CpqGroup& g : cpq_groups(modes)) {
-    if (g.source >= sources) break;
-    double poly = g.beta[g.degree];
-    for (unsigned j = g.degree; j-- > 0;) poly = poly * beta + g.beta[j];
-    out.push_back(poly);
-  }
-  return out;
+  const TermTable& t = cpq_table(modes);
+  return t.beta_polynomials(beta, t.groups_below(unsigned(sources * MM * MM)));
 }
 
 std::array<SonineCollisionIntegrals, sonine_cpq_sources> sonine_pair_integrals_from(const std::vector<double>& polys, double weight, double beta,
                                                                                    double Ak, double Ai, std::size_t modes, unsigned sources) {
-  const double V = Ak + Ai, a = Ak / V, bP = beta * weight * std::sqrt(2.0 * std::numbers::pi * V);
-  std::array<double, a_lowest + a_highest + 1> apow{};  // a^(j − a_lowest)
-  apow[a_lowest] = 1.0;
-  for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
-  for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
+  const double V = Ak + Ai, bP = beta * weight * std::sqrt(2.0 * std::numbers::pi * V);
+  std::array<double, sonine_cpq_sources * MM * MM> sum{};
+  cpq_table(modes).evaluate(polys, Ak / V, sum.data());
   std::array<SonineCollisionIntegrals, sonine_cpq_sources> C;
-  for (auto& c : C) c.modes = modes;
-  const std::vector<CpqGroup>& groups = cpq_groups(modes);
-  for (std::size_t j = 0; j < polys.size(); ++j) C[groups[j].source].c[groups[j].entry] += polys[j] * apow[groups[j].a_index];
-  for (unsigned src = 0; src < sources; ++src)
-    for (double& x : C[src].c) x *= bP;
+  for (unsigned src = 0; src < sonine_cpq_sources; ++src) {
+    C[src].modes = modes;
+    if (src < sources)
+      for (std::size_t e = 0; e < MM * MM; ++e) C[src].c[e] = sum[src * MM * MM + e] * bP;
+  }
   return C;
 }
 

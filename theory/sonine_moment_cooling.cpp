@@ -7,55 +7,29 @@
 #include <stdexcept>
 
 #include "sonine_moment_table.hpp"
+#include "term_table.hpp"
 
 namespace granmix::theory {
 
 namespace {
 
 constexpr int PM = sonine_moment_max, NS = sonine_moment_sources;
-constexpr int a_offset = 4, a_powers = 12, beta_terms = 10;  // a^(j − 4), j < 12; β^0 … β^9
 
-// The table's rows of one (p, source, power of a), their β coefficients for Horner.
-struct Group {
-  int entry, a_index, degree = 0;
-  std::array<double, beta_terms> beta{};
-};
-const std::vector<Group>& groups() {
-  static const std::vector<Group> g = [] {
-    std::vector<Group> out;
-    for (const SonineMomentTerm& r : sonine_moment_terms) {
-      const int entry = (r.p - 1) * NS + r.source, a_index = r.ia + a_offset;
-      if (a_index < 0 || a_index >= a_powers || r.ib >= beta_terms) throw std::logic_error("sonine_moment_table: power out of range");
-      if (out.empty() || out.back().entry != entry || out.back().a_index != a_index) out.push_back({entry, a_index});
-      out.back().beta[std::size_t(r.ib)] = r.coefficient;  // rows sorted by p, source, ia, ib
-      out.back().degree = std::max(out.back().degree, r.ib);
-    }
-    return out;
+// The table, entry (p − 1)·NS + source.
+const TermTable& moment_table() {
+  static const TermTable t = [] {
+    std::vector<TermTable::Term> rows;
+    for (const SonineMomentTerm& r : sonine_moment_terms) rows.push_back({unsigned((r.p - 1) * NS + r.source), r.ia, r.ib, r.coefficient});
+    return TermTable(rows);
   }();
-  return g;
-}
-
-// The β polynomials of every group at one pair's β (constant in time: masses and ε).
-std::vector<double> beta_polynomials(double beta) {
-  std::vector<double> out;
-  for (const Group& g : groups()) {
-    double poly = g.beta[std::size_t(g.degree)];
-    for (int j = g.degree; j-- > 0;) poly = poly * beta + g.beta[std::size_t(j)];
-    out.push_back(poly);
-  }
-  return out;
+  return t;
 }
 
 // H(p; source) of one ordered pair from its β polynomials, times β P: the rates of ⟨c^(2p)⟩_k per unit
 // Sonine coefficient.
-std::array<double, PM * NS> pair_moments(const double* poly, double a, double bP) {
-  std::array<double, a_powers> apow{};
-  apow[a_offset] = 1.0;
-  for (int j = a_offset + 1; j < a_powers; ++j) apow[std::size_t(j)] = apow[std::size_t(j - 1)] * a;
-  for (int j = a_offset; j-- > 0;) apow[std::size_t(j)] = apow[std::size_t(j + 1)] / a;
+std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, double a, double bP) {
   std::array<double, PM * NS> H{};
-  const std::vector<Group>& g = groups();
-  for (std::size_t j = 0; j < g.size(); ++j) H[std::size_t(g[j].entry)] += poly[j] * apow[std::size_t(g[j].a_index)];
+  moment_table().evaluate(polys, a, H.data());
   for (double& x : H) x *= bP;
   return H;
 }
@@ -64,7 +38,7 @@ std::array<double, PM * NS> pair_moments(const double* poly, double a, double bP
 
 std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai) {
   const double V = Ak + Ai, beta = mu * (1.0 + eps);
-  return pair_moments(beta_polynomials(beta).data(), Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
+  return pair_moments(moment_table().beta_polynomials(beta), Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
 }
 
 namespace {
@@ -85,8 +59,7 @@ SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order,
   for (std::size_t k = 0; k < N_; ++k)
     for (std::size_t i = 0; i < N_; ++i) {
       const double beta = mix[i].mass / (mix[i].mass + mix[k].mass) * (1.0 + rates.law().eps(k, i)), sigma = mix.sigma(k, i);
-      const std::vector<double> poly = beta_polynomials(beta);
-      polys_.insert(polys_.end(), poly.begin(), poly.end());
+      polys_.push_back(moment_table().beta_polynomials(beta));
       bP_.push_back(beta * mix[i].density * sigma * sigma * rates.chi(k, i) * std::sqrt(2.0 * std::numbers::pi));
     }
 }
@@ -102,7 +75,7 @@ void SonineMomentCooling::assemble(const double* T) const {
     const double theta_k = T[k] / mix[k].mass;
     for (std::size_t i = 0; i < N_; ++i) {
       const double V = theta_k + T[i] / mix[i].mass;
-      const std::array<double, PM * NS> H = pair_moments(&polys_[(k * N_ + i) * groups().size()], theta_k / V, bP_[k * N_ + i] * std::sqrt(V));
+      const std::array<double, PM * NS> H = pair_moments(polys_[k * N_ + i], theta_k / V, bP_[k * N_ + i] * std::sqrt(V));
       for (int p = 0; p < PM; ++p) {
         R0_[k * PM + std::size_t(p)] += H[std::size_t(p * NS)];
         for (std::size_t j = 0; j < 2; ++j) {

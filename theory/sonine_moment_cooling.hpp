@@ -47,7 +47,8 @@ class SonineMomentCooling final : public CoolingModel {
   int order_;
   std::size_t N_;
   std::vector<double> z0_;
-  std::vector<double> polys_, bP_;  // per ordered pair (k, i): the table's β polynomials; β n_i σ_ki² χ_ki √(2π)
+  std::vector<std::vector<double>> polys_;  // per ordered pair (k, i): the table's β polynomials
+  std::vector<double> bP_;                  // per ordered pair: β n_i σ_ki² χ_ki √(2π)
   // At the last temperatures (assemble): per species k and moment p = 1..3 the Maxwell part R0 and the
   // coefficients of the own a₂, a₃ (self_), per pair (k, i) those of the partner's a₂, a₃ (partner_).
   mutable std::vector<double> assembled_T_, R0_, self_, partner_;

@@ -1,0 +1,43 @@
+#include "term_table.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace granmix::theory {
+
+TermTable::TermTable(const std::vector<Term>& rows) {
+  for (const Term& r : rows) {
+    if (r.ia < -a_lowest || r.ia > a_highest || r.ib < 0 || r.ib >= beta_terms) throw std::logic_error("generated term table: power out of range");
+    const int a_index = a_lowest + r.ia;
+    if (groups_.empty() || groups_.back().entry != r.entry || groups_.back().a_index != a_index) groups_.push_back({r.entry, a_index, 0, {}});
+    groups_.back().beta[std::size_t(r.ib)] = r.coefficient;  // rows sorted by entry, ia, ib
+    groups_.back().degree = std::max(groups_.back().degree, r.ib);
+  }
+}
+
+std::vector<double> TermTable::beta_polynomials(double beta, std::size_t groups) const {
+  std::vector<double> out;
+  out.reserve(groups);
+  for (std::size_t j = 0; j < groups; ++j) {
+    const Group& g = groups_[j];
+    double poly = g.beta[std::size_t(g.degree)];
+    for (int d = g.degree; d-- > 0;) poly = poly * beta + g.beta[std::size_t(d)];
+    out.push_back(poly);
+  }
+  return out;
+}
+
+std::size_t TermTable::groups_below(unsigned entry_limit) const {
+  return std::size_t(std::partition_point(groups_.begin(), groups_.end(), [&](const Group& g) { return g.entry < entry_limit; }) -
+                     groups_.begin());
+}
+
+void TermTable::evaluate(const std::vector<double>& polys, double a, double* out) const {
+  std::array<double, a_lowest + a_highest + 1> apow{};  // a^(j − a_lowest)
+  apow[a_lowest] = 1.0;
+  for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
+  for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
+  for (std::size_t j = 0; j < polys.size(); ++j) out[groups_[j].entry] += polys[j] * apow[std::size_t(groups_[j].a_index)];
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,40 @@
+#pragma once
+// A generated closed form as a table of exact terms coefficient · a^ia · β^ib per entry (sonine_cpq_table.hpp,
+// sonine_moment_table.hpp), grouped per (entry, power of a) into polynomials in β for Horner. β = μ(1 + ε) is
+// constant for a pair, so its polynomials are computed once (beta_polynomials) and each evaluation at a new
+// a = θ_k/(θ_k + θ_i) costs one multiply-add per group (evaluate).
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace granmix::theory {
+
+class TermTable {
+ public:
+  struct Term {
+    unsigned entry;
+    int ia, ib;
+    double coefficient;
+  };
+  static constexpr int a_lowest = 4, a_highest = 11, beta_terms = 10;  // a^−4 … a^11, β^0 … β^9
+  // rows sorted by entry, ia, ib; std::logic_error for a power out of range.
+  explicit TermTable(const std::vector<Term>& rows);
+
+  // The β polynomials of the first `groups` groups (all by default), in group order.
+  std::vector<double> beta_polynomials(double beta, std::size_t groups) const;
+  std::vector<double> beta_polynomials(double beta) const { return beta_polynomials(beta, groups_.size()); }
+  // Number of groups whose entry is below `entry_limit` (entries are sorted: a prefix of the table).
+  std::size_t groups_below(unsigned entry_limit) const;
+  // out[entry] += poly_j · a^ia_j over the given polynomials (a prefix of the groups).
+  void evaluate(const std::vector<double>& polys, double a, double* out) const;
+
+ private:
+  struct Group {
+    unsigned entry;
+    int a_index, degree;
+    std::array<double, beta_terms> beta;
+  };
+  std::vector<Group> groups_;
+};
+
+}  // namespace granmix::theory
