@@ -3,7 +3,7 @@
 // start, once with their own cumulants (the ⟨c⁴⟩ balance truncated at a₂, relaxing from the Maxwellian start) and
 // once with the cumulants the DSMC measures, c_k(t). If the second lies on DSMC, the rates are right and the gap
 // is the cumulant equation's (the kinetic level's first Sonine). Beside them the kinetic-cooling3 variant (a₂ and
-// a₃ relaxing, sonine_moment_cooling.hpp; the first Sonine again for a viscoelastic law). The same integrator fed
+// a₃ relaxing, sonine_moment_cooling.hpp; by quadrature over the impact speed for a viscoelastic law). The same integrator fed
 // the first Sonine's own c_k(t) at the sample times must give back its T_k (the check: interpolation error only).
 // Scenes: v1 Figs. 2, 9, 10 (constant ε, the viscoelastic binary and ternary), all Maxwellian starts.
 #include <fmt/format.h>

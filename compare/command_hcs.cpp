@@ -82,6 +82,10 @@ int run(const HcsOptions& o) {
   const theory::CollisionRates rates(mix, law, chi);
   const theory::SettledDiffusion d = theory::settled_diffusion(rates);
   const theory::SonineHcs sonine = theory::sonine_hcs(mix, law, chi);
+  // Sonine order 3 (a₂ and a₃ of every species, the level kinetic-cooling3's HCS): the next correction of the
+  // first-Sonine ratios and cumulants, up to as many species as that level carries a₃ for.
+  std::optional<theory::SonineHcs> third;
+  if (mix.size() <= 100) third = theory::sonine_hcs(mix, law, chi, false, theory::SonineSolver::automatic, 3);
   // τ₀ needs an absolute density: it is omitted for the dilute MG form and for a gas that does not cool.
   const bool has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
   // NaN where the second-Sonine tracer problem has no diffusive solution (sonine2_diffusion.hpp).
@@ -112,10 +116,12 @@ int run(const HcsOptions& o) {
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
       if (!orders[k].empty()) s["D_sonine_factors"] = orders[k];
       if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
+      if (third) s["T_ratio_sonine3"] = third->T[k] / third->T[0], s["c_sonine3"] = third->c[k], s["a3_sonine3"] = third->a3[k];
       j["species"].push_back(s);
     }
     if (has_tau0) j["tau0"] = d.tau0;
     j["zeta_star"] = sonine.zeta_star;
+    if (third) j["zeta_star_sonine3"] = third->zeta_star;
     if (trunc && mix.size() > 1) {
       nlohmann::ordered_json t{{"eps", eps_one}, {"a2_sonine1", trunc->a2_first}, {"a2_sonine2", trunc->linear.a2}, {"a3_sonine2", trunc->linear.a3},
                                {"a3_given_a2_sonine1", trunc->a2_fixed.a3}};
@@ -132,6 +138,12 @@ int run(const HcsOptions& o) {
                 mix[k].density, d.T[k] / d.T[0], sonine.T[k] / sonine.T[0], sonine.c[k], d.D_ratio[k], sonine.tail_exponent(k),
                 std::isfinite(sonine2[k]) ? fmt::format("{:.8g}", sonine2[k]).c_str() : "-");
   std::printf("zeta_star = %.17g   (first-Sonine reduced cooling rate, MG units n sigma12^2 v0)\n", sonine.zeta_star);
+  if (third) {
+    std::printf("Sonine order 3 (a2, a3 per species):");
+    for (std::size_t k = 0; k < mix.size(); ++k)
+      std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, third->T[k] / third->T[0], third->c[k], third->a3[k]);
+    std::printf("  zeta_star %.12g\n", third->zeta_star);
+  }
   if (trunc)
     std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
                 eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());

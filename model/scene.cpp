@@ -290,7 +290,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
@@ -401,11 +401,24 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
     s.compare = read_compare(t, s.mixture.size());
     t.finish();
     if (!s.dsmc.present) top.fail("compare", "comparing needs a [dsmc] table", "[dsmc] with quick and paper");
-    for (const CompareQuantity& q : s.compare)  // the lower levels a correction is measured from exist beside "kinetic" only
-      for (const std::string& lower : q.correction_from)
-        if ((lower == "paper" || lower == "sonine1") && s.theory.level != "kinetic")
-          t.fail("correction_from", "\"" + lower + "\" is a lower level of the kinetic level, but theory.level is \"" + s.theory.level + "\"",
-                 "theory.level = \"kinetic\", or correction_from = \"maxwell\"");
+    // The levels a correction is measured from, beside the judged one (theory/theory_level.hpp, companion_level).
+    const std::string& level = s.theory.level;
+    const bool cooling3 = level == "kinetic-cooling3" || level == "kinetic-cooling3-shaped";
+    for (const CompareQuantity& q : s.compare)
+      for (const std::string& lower : q.correction_from) {
+        if (lower == "paper" && level == "paper")
+          t.fail("correction_from", "\"paper\" is a lower level of the kinetic levels, but theory.level is \"paper\"",
+                 "theory.level = \"kinetic\" (or a kinetic variant), or correction_from = \"maxwell\"");
+        if (lower == "sonine1" && level != "kinetic" && level != "kinetic-cooling3")
+          t.fail("correction_from", "\"sonine1\" is the first-Sonine D of the kinetic level, but theory.level is \"" + level + "\"",
+                 "theory.level = \"kinetic\" or \"kinetic-cooling3\", or correction_from = \"paper\" or \"maxwell\"");
+        if (lower == "kinetic" && !cooling3)
+          t.fail("correction_from", "\"kinetic\" is the first-Sonine temperatures under a kinetic-cooling3 level, but theory.level is \"" +
+                 level + "\"", "theory.level = \"kinetic-cooling3\", or correction_from = \"paper\"");
+        if (lower == "cooling3" && level != "paper" && level != "kinetic")
+          t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
+                 level + "\"", "theory.level = \"paper\" or \"kinetic\"");
+      }
   }
   if (top.has("plot")) {
     TomlFields t = top.sub("plot");

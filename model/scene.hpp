@@ -77,11 +77,12 @@ struct DsmcSettings {
 struct CompareQuantity {
   std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
   std::string theory;           // the theory column that predicts the DSMC column `name` (default: name)
-  // Model error computed point by point as the size of the judged theory's last correction:
+  // Model error computed point by point as the size of the judged theory's last or next correction:
   // |theory − theory_<correction_from>| / |theory| ("paper": the paper level; "maxwell": the
   // Maxwellian column of a Sonine quantity; "sonine1": the kinetic level with first-Sonine D, i.e. the
-  // size of its second-Sonine correction), added to `relative`. Several: the largest of them at each point
-  // (the last corrections of independent truncations). Empty: `relative` alone.
+  // size of its second-Sonine correction; "cooling3": the level kinetic-cooling3, i.e. the next Sonine order
+  // (a₃) of first-Sonine temperatures and HCS), added to `relative`. Several: the largest of them at each point
+  // (the corrections of independent truncations). Empty: `relative` alone.
   std::vector<std::string> correction_from;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes

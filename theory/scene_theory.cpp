@@ -67,9 +67,11 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   // ratio with its last correction as model error (correction_from = "maxwell").
   if (relative) t.columns.push_back("gamma_ratio"), t.columns.push_back("gamma_ratio_maxwell");
   if (o.cumulant) t.columns.push_back("c");
-  auto sonine_of = [](const model::Scene& p, bool maxwell) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), maxwell); };
-  const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0), false).gamma() : nan;
-  const double gamma0_maxwell = relative ? sonine_of(model::sweep_point(s, 0.0), true).gamma() : nan;
+  // The level's HCS (MG's first Sonine, or order 3) and the Maxwellian one beside it.
+  auto sonine_of = [&](const model::Scene& p) { return level.hcs(scene_rates(p, p.mixture, p.restitution)); };
+  auto maxwell_of = [](const model::Scene& p) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), true); };
+  const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0)).gamma() : nan;
+  const double gamma0_maxwell = relative ? maxwell_of(model::sweep_point(s, 0.0)).gamma() : nan;
   for (double x : sw.values) {
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
@@ -79,8 +81,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     }
     const std::vector<double> inc = increments ? increment_ratios(p, level) : std::vector<double>{};
     SonineHcs sonine, maxwell;
-    if (o.gamma || o.cumulant) sonine = sonine_of(p, false);
-    if (o.gamma) maxwell = sonine_of(p, true);
+    if (o.gamma || o.cumulant) sonine = sonine_of(p);
+    if (o.gamma) maxwell = maxwell_of(p);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
@@ -94,13 +96,15 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   return t;
 }
 
-// The settled first-Sonine distribution on the DSMC bins (MG Figs. 3, 7), each value the shell
-// average of what a histogram bin estimates: Φ_k (Eq. 27), the Maxwellian with the same λ_k, Δ_k from
-// those two as MG Eq. (27) defines it (→ Eq. 28 for narrow bins), G_k = exp(2β_k v*/ζ*) Φ_k (Eq. 30)
-// at the bin centre v*, and the Maxwellian G.
-Table distribution_table(const model::Scene& s) {
+// The level's settled distribution on the DSMC bins (MG Figs. 3, 7), each value the shell
+// average of what a histogram bin estimates: Φ_k (Eq. 27; at order 3 with a₃S₃), the Maxwellian with the same
+// λ_k, Δ_k from those two as MG Eq. (27) defines it (→ Eq. 28 for narrow bins), G_k = exp(2β_k v*/ζ*) Φ_k
+// (Eq. 30) at the bin centre v*, and the Maxwellian G. The weight exp(2β_k v*/ζ*) is part of G's definition,
+// the first-Sonine one at every level, as the DSMC's (dsmc/distribution_table.cpp).
+Table distribution_table(const model::Scene& s, const TheoryLevel& level) {
   const auto& o = s.observables;
-  const SonineHcs h = sonine_hcs(s.mixture, s.restitution, scene_contact_values(s));
+  const SonineHcs h = level.hcs(scene_rates(s, s.mixture, s.restitution));
+  const SonineHcs first = sonine_hcs(s.mixture, s.restitution, scene_contact_values(s));
   Table t;
   t.columns = {"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"};
   const double width = o.distribution_vmax / double(o.distribution_bins);
@@ -109,7 +113,7 @@ Table distribution_table(const model::Scene& s) {
     for (std::size_t k = 0; k < s.mixture.size(); ++k) {
       const double phi = shell_average([&](double u) { return h.phi(k, u); }, lo, hi);
       const double maxwell = shell_average([&](double u) { return maxwellian_phi(h.lambda[k], u); }, lo, hi);
-      const double tail = std::exp(h.tail_exponent(k) * v);
+      const double tail = std::exp(first.tail_exponent(k) * v);
       t.rows.push_back({v, double(k + 1), phi, maxwell, 2.0 / h.c[k] * (phi / maxwell - 1.0), tail * phi, tail * maxwell});
     }
   }
@@ -245,7 +249,7 @@ namespace {
 // Every curve of a scene at one level, in natural time units.
 Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& stats) {
   if (s.theory.sweep) return sweep_table(s, level);
-  if (s.observables.distribution_settled) return distribution_table(s);
+  if (s.observables.distribution_settled) return distribution_table(s, level);
   const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
   return time_table(s, s.theory.tracer ? tracer_samples(s, rates, level) : history_samples(s, rates, level, stats));
 }
@@ -299,10 +303,11 @@ TheoryResult run_theory(const model::Scene& scene) {
     SolverStats paper_stats;
     append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
   }
-  if (s.theory.level == "kinetic" && corrected_from(s, "sonine1")) {  // its first-Sonine-D companion
-    SolverStats lower_stats;
-    append_level_columns(r.table, level_table(s, *make_theory_level("kinetic-sonine1"), lower_stats), "sonine1");
-  }
+  for (const std::string correction : {"sonine1", "kinetic", "cooling3"})  // the other levels a model error is measured from
+    if (corrected_from(s, correction)) {
+      SolverStats companion_stats;
+      append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats), correction);
+    }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

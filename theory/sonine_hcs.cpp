@@ -4,6 +4,7 @@
 #include <gsl/gsl_multiroots.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -13,6 +14,7 @@
 #include "model/errors.hpp"
 #include "model/gsl_setup.hpp"
 #include "settled_ratios.hpp"
+#include "sonine_moment_cooling.hpp"
 #include "sonine_polynomials.hpp"
 #include "sonine_system.hpp"
 
@@ -29,11 +31,14 @@ struct Problem {
   double sref2;  // σ_ref² = σ_12² (σ_11² for one species)
   double m1, m2;
   SonineSystem system;
+  // Order 3: the moment closure in the mixture's own units (T = 1 the mean temperature), null at order 2.
+  std::unique_ptr<CollisionRates> rates;
+  std::unique_ptr<SonineMomentCooling> moments;
 };
 
-// Everything at given temperatures T_k (Σ x_k T_k = 1): λ, c, cooling rates ζ_k.
+// Everything at given temperatures T_k (Σ x_k T_k = 1): λ, c (a₃ at order 3), cooling rates ζ_k.
 struct Evaluation {
-  std::vector<double> lambda, c, zeta;
+  std::vector<double> lambda, c, a3, zeta;
 };
 
 Evaluation evaluate(Problem& p, const std::vector<double>& T) {
@@ -41,6 +46,15 @@ Evaluation evaluate(Problem& p, const std::vector<double>& T) {
   Evaluation e;
   const double v0sq = 2.0 * (p.m1 + p.m2) / (p.m1 * p.m2);  // T = 1
   for (std::size_t k = 0; k < N; ++k) e.lambda.push_back(p.mix[k].mass * v0sq / (2.0 * T[k]));
+  if (p.moments) {  // order 3: the steady a's at these temperatures, ζ_k in units of ν_ref = n σ_ref² v0
+    const std::vector<double> z = p.moments->steady_state(T.data());
+    e.c.assign(z.begin(), z.begin() + std::ptrdiff_t(N)), e.a3.assign(z.begin() + std::ptrdiff_t(N), z.end());
+    e.zeta.resize(N);
+    p.moments->rates(T.data(), z.data(), e.zeta.data(), nullptr);
+    const double nu_ref = p.mix.total_density() * p.sref2 * std::sqrt(v0sq);
+    for (double& x : e.zeta) x /= nu_ref;
+    return e;
+  }
   p.system.assemble(e.lambda.data());
   e.c.assign(N, 0.0);
   if (!p.maxwell) p.system.solve_cumulants(e.c.data());
@@ -119,18 +133,23 @@ std::vector<double> solve_many(Problem& p) {
 }  // namespace
 
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-                     bool maxwell, SonineSolver solver) {
+                     bool maxwell, SonineSolver solver, int order) {
   if (alpha.is_viscoelastic()) throw std::invalid_argument("Sonine HCS: needs constant restitution coefficients");
+  if (order < 2 || order > 3 || (maxwell && order != 2)) throw std::invalid_argument("Sonine HCS: order 2 or 3 (Maxwellian: 2)");
   const std::size_t N = mix.size();
   const double sref2 = std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2);
-  Problem p{mix, alpha, chi, maxwell, N, sref2, mix[0].mass, mix[N > 1 ? 1 : 0].mass, SonineSystem(mix, alpha, chi, sref2)};
+  Problem p{mix, alpha, chi, maxwell, N, sref2, mix[0].mass, mix[N > 1 ? 1 : 0].mass, SonineSystem(mix, alpha, chi, sref2), nullptr, nullptr};
+  if (order == 3) {
+    p.rates = std::make_unique<CollisionRates>(mix, alpha, chi);
+    p.moments = std::make_unique<SonineMomentCooling>(*p.rates, 3);
+  }
   SonineHcs out;
   if (N == 1)
     out.T = {1.0};
   else
     out.T = (N == 2 && solver == SonineSolver::automatic) ? solve_binary(p) : solve_many(p);
   const Evaluation e = evaluate(p, out.T);
-  out.c = e.c, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
+  out.c = e.c, out.a3 = e.a3, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
   for (std::size_t k = 0; k < N; ++k) {
     double b = 0.0;
     for (std::size_t j = 0; j < N; ++j) b += mix.fraction(j) * chi[k][j] * std::pow(mix.sigma(k, j), 2) / p.sref2;
@@ -139,11 +158,13 @@ SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha,
   return out;
 }
 
-double SonineHcs::delta(std::size_t k, double v) const {
-  return sonine_S2(lambda[k] * v * v);  // MG Eq. (28)
-}
-
 double maxwellian_phi(double lambda, double v) { return std::pow(lambda / std::numbers::pi, 1.5) * std::exp(-lambda * v * v); }
+
+double SonineHcs::delta(std::size_t k, double v) const {
+  const double x = lambda[k] * v * v;
+  if (a3.empty() || c[k] == 0.0) return sonine_S2(x);  // MG Eq. (28)
+  return sonine_S2(x) + 2.0 * a3[k] / c[k] * sonine_S3(x);  // order 3: + (a₃/a₂) S₃
+}
 
 double SonineHcs::phi(std::size_t k, double v) const {
   return maxwellian_phi(lambda[k], v) * (1.0 + 0.5 * c[k] * delta(k, v));  // MG Eq. (27)

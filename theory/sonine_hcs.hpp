@@ -6,6 +6,9 @@
 // Unknowns: the cumulants c_k (N linear equations, MG Eqs. 31–38) and the temperature ratios from
 // equal cooling rates (MG Eq. 45): Brent bracketing in ln γ for two species; gsl_multiroot (hybrids)
 // in ln(T_k/T_1) from the Maxwellian ratios for more. `maxwell = true` sets every c_k = 0.
+// Order 3 (beyond MG): every species also carries a₃, f_k = f_M[1 + a₂S₂ + a₃S₃], and the a's are the steady
+// ones of the ⟨c⁴⟩ and ⟨c⁶⟩ balances (sonine_moment_cooling.hpp, the level kinetic-cooling3) — the first-Sonine
+// truncation's next correction, which the γ-sweep scenes judge with.
 #include <vector>
 
 #include "model/mixture.hpp"
@@ -16,13 +19,15 @@ namespace granmix::theory {
 struct SonineHcs {
   std::vector<double> T;       // T_k/T, normalised so that Σ x_k T_k = 1
   std::vector<double> c;       // c_k = 2 a₂ (physics.md §6)
+  std::vector<double> a3;      // a₃,k at order 3 (empty at the first Sonine, which truncates it)
   std::vector<double> lambda;  // λ_k
   std::vector<double> beta;    // β_k = π Σ_j x_j χ_kj (σ_kj/σ_ref)² (MG Eq. 20)
   double zeta_star = 0.0;      // common reduced cooling rate ζ*
   double gamma() const { return T[0] / T[1]; }  // MG's γ = T_1/T_2 (binary)
   // Tail Φ_k ~ A exp(−(2β_k/ζ*) v*), linear in v* (physics.md §6 correction of MG Eq. 21).
   double tail_exponent(std::size_t k) const { return 2.0 * beta[k] / zeta_star; }
-  // MG Eq. (27)/(17): first-Sonine Φ_k(v*), its Sonine deviation Δ_k (Eq. 28) and G_k (Eq. 30).
+  // MG Eq. (27)/(17): first-Sonine Φ_k(v*), its Sonine deviation Δ_k (Eq. 28) and G_k (Eq. 30); at order 3
+  // with a₃ S₃ beside a₂ S₂, Δ_k being (Φ_k/Φ_M − 1)/a₂ as MG define it.
   double phi(std::size_t k, double v) const;
   double delta(std::size_t k, double v) const;
   double G(std::size_t k, double v) const;
@@ -35,8 +40,9 @@ double maxwellian_phi(double lambda, double v);
 // multiroot can be forced for two species (to check one solver against the other).
 enum class SonineSolver { automatic, multiroot };
 
-// α = restitution matrix (constant law only); χ = contact values (1 dilute).
+// α = restitution matrix (constant law only); χ = contact values (1 dilute); order 2 (MG's first Sonine) or 3
+// (not with maxwell; up to the moment table's order).
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
-                     bool maxwell = false, SonineSolver solver = SonineSolver::automatic);
+                     bool maxwell = false, SonineSolver solver = SonineSolver::automatic, int order = 2);
 
 }  // namespace granmix::theory

@@ -5,7 +5,11 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 
+#include <Eigen/Dense>
+
+#include "model/errors.hpp"
 #include "sonine_moment_table.hpp"
 #include "term_table.hpp"
 
@@ -36,9 +40,16 @@ std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, doubl
 
 }  // namespace
 
+std::vector<double> sonine_moment_beta_polynomials(double beta) { return moment_table().beta_polynomials(beta); }
+
+std::array<double, PM * NS> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai) {
+  const double V = Ak + Ai;
+  return pair_moments(polys, Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
+}
+
 std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai) {
-  const double V = Ak + Ai, beta = mu * (1.0 + eps);
-  return pair_moments(moment_table().beta_polynomials(beta), Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
+  const double beta = mu * (1.0 + eps);
+  return sonine_moment_pair_from(sonine_moment_beta_polynomials(beta), weight, beta, Ak, Ai);
 }
 
 namespace {
@@ -48,20 +59,12 @@ constexpr double M1 = 1.5, M2 = 15.0 / 4.0, M3 = 105.0 / 8.0;
 
 }  // namespace
 
-SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0)
-    : rates_(rates), order_(order), N_(rates.size()), z0_(std::move(z0)) {
+SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0,
+                                         std::shared_ptr<const SoninePairTerms> terms)
+    : rates_(rates), order_(order), N_(rates.size()), z0_(std::move(z0)), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {
   if (order < 2 || order > PM) throw std::invalid_argument("Sonine moment cooling: order must be 2 or 3");
-  if (rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine moment cooling: constant restitution only (closed forms at fixed ε)");
   if (z0_.empty()) z0_.assign(state_size(), 0.0);
   if (z0_.size() != state_size()) throw std::invalid_argument("Sonine moment cooling: initial state needs (order − 1) values per species");
-  // Per ordered pair the constants: β = μ_ik(1 + ε_ki), its polynomials, and β n_i σ_ki² χ_ki √(2π) (P without √V).
-  const model::Mixture& mix = rates.mixture();
-  for (std::size_t k = 0; k < N_; ++k)
-    for (std::size_t i = 0; i < N_; ++i) {
-      const double beta = mix[i].mass / (mix[i].mass + mix[k].mass) * (1.0 + rates.law().eps(k, i)), sigma = mix.sigma(k, i);
-      polys_.push_back(moment_table().beta_polynomials(beta));
-      bP_.push_back(beta * mix[i].density * sigma * sigma * rates.chi(k, i) * std::sqrt(2.0 * std::numbers::pi));
-    }
 }
 
 void SonineMomentCooling::assemble(const double* T) const {
@@ -72,10 +75,10 @@ void SonineMomentCooling::assemble(const double* T) const {
   const model::Mixture& mix = rates_.mixture();
   R0_.assign(N_ * PM, 0.0), self_.assign(N_ * PM * 2, 0.0), partner_.resize(N_ * N_ * PM * 2);
   for (std::size_t k = 0; k < N_; ++k) {
-    const double theta_k = T[k] / mix[k].mass;
     for (std::size_t i = 0; i < N_; ++i) {
-      const double V = theta_k + T[i] / mix[i].mass;
-      const std::array<double, PM * NS> H = pair_moments(polys_[k * N_ + i], theta_k / V, bP_[k * N_ + i] * std::sqrt(V));
+      const double sigma = mix.sigma(k, i);
+      const std::array<double, PM * NS> H =
+          terms_->moments(k, i, mix[i].density * sigma * sigma * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i]);
       for (int p = 0; p < PM; ++p) {
         R0_[k * PM + std::size_t(p)] += H[std::size_t(p * NS)];
         for (std::size_t j = 0; j < 2; ++j) {
@@ -131,6 +134,23 @@ bool SonineMomentCooling::third_sonine(const double* z, double* a3) const {
   if (order_ < 3) return false;
   std::copy(z + N_, z + 2 * N_, a3);
   return true;
+}
+
+std::vector<double> SonineMomentCooling::steady_state(const double* T) const {
+  const std::size_t n = state_size();
+  std::vector<double> z(n, 0.0), xi(N_), b(n), d(n);
+  rates(T, z.data(), xi.data(), b.data());
+  Eigen::MatrixXd A(n, n);
+  for (std::size_t j = 0; j < n; ++j) {
+    z[j] = 1.0;
+    rates(T, z.data(), xi.data(), d.data());
+    z[j] = 0.0;
+    for (std::size_t i = 0; i < n; ++i) A(Eigen::Index(i), Eigen::Index(j)) = d[i] - b[i];
+  }
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  if (!lu.isInvertible()) throw NumericalError("Sonine moments at order " + std::to_string(order_) + ": the steady a's are singular (Eigen FullPivLU)");
+  const Eigen::VectorXd x = lu.solve(-Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(n)));
+  return std::vector<double>(x.data(), x.data() + n);
 }
 
 }  // namespace granmix::theory

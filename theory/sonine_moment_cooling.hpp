@@ -17,8 +17,11 @@
 #include <cstddef>
 #include <vector>
 
+#include <memory>
+
 #include "collision_rates.hpp"
 #include "cooling_model.hpp"
+#include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
 
@@ -26,12 +29,16 @@ namespace granmix::theory {
 // entry (p − 1)·5 + source, sources Maxwell, own a₂, own a₃, partner's a₂, partner's a₃ (sonine_moment_table.hpp);
 // weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i + m_k), A = T/m of k and i.
 std::array<double, 15> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai);
+// The same from the table's polynomials in β = μ_ik(1 + ε) (constant per pair: callers keep them).
+std::vector<double> sonine_moment_beta_polynomials(double beta);
+std::array<double, 15> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai);
 
 class SonineMomentCooling final : public CoolingModel {
  public:
-  // order 2 or 3; z0: the initial unknowns (empty: 0, the Maxwellian start). Constant restitution only
-  // (std::invalid_argument otherwise: the table is the closed form at fixed ε).
-  SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0 = {});
+  // order 2 or 3; z0: the initial unknowns (empty: 0, the Maxwellian start); terms: the pair terms (null: made
+  // from the law — closed forms at constant ε, the quadrature over the impact speed for a viscoelastic law).
+  SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0 = {},
+                      std::shared_ptr<const SoninePairTerms> terms = nullptr);
 
   int order() const { return order_; }
   std::size_t state_size() const override { return std::size_t(order_ - 1) * N_; }
@@ -39,6 +46,10 @@ class SonineMomentCooling final : public CoolingModel {
   void rates(const double* T, const double* z, double* xi, double* dz_dt) const override;
   bool cumulants(const double* T, const double* z, double* c) const override;
   bool third_sonine(const double* z, double* a3) const override;
+  // The unknowns that are steady at these temperatures: dz/dt is affine in z at fixed T (the closure is
+  // linear in the a's), so its zero is one linear solve (probed column by column, full-pivot LU); NumericalError
+  // if singular. In the HCS (all ζ_k equal, sonine_hcs at order 3) these are the settled a's.
+  std::vector<double> steady_state(const double* T) const;
 
  private:
   void assemble(const double* T) const;
@@ -47,8 +58,7 @@ class SonineMomentCooling final : public CoolingModel {
   int order_;
   std::size_t N_;
   std::vector<double> z0_;
-  std::vector<std::vector<double>> polys_;  // per ordered pair (k, i): the table's β polynomials
-  std::vector<double> bP_;                  // per ordered pair: β n_i σ_ki² χ_ki √(2π)
+  std::shared_ptr<const SoninePairTerms> terms_;
   // At the last temperatures (assemble): per species k and moment p = 1..3 the Maxwell part R0 and the
   // coefficients of the own a₂, a₃ (self_), per pair (k, i) those of the partner's a₂, a₃ (partner_).
   mutable std::vector<double> assembled_T_, R0_, self_, partner_;

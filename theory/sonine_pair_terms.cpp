@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "sonine_moment_cooling.hpp"
 #include "sonine_quadrature.hpp"
 
 namespace granmix::theory {
@@ -35,6 +36,15 @@ class ClosedFormTerms final : public SoninePairTerms {
       cached = {beta, modes, sources, sonine_cpq_beta_polynomials(beta, modes, sources)};
     return finish(sonine_pair_integrals_from(cached.polys, weight, beta, Tk / mk, Ti / mi, modes, sources), eps, mk, mi, Tk, Ti, partner_sonine);
   }
+  std::array<double, 15> moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+    // The moment table's β polynomials per ordered pair (β fixed within an integration), made on first use.
+    const double beta = mi / (mi + mk) * (1.0 + law_.eps(k, i));
+    const std::size_t N = law_.size();
+    if (moment_polys_.empty()) moment_polys_.resize(N * N);
+    BetaPolynomials& cached = moment_polys_[k * N + i];
+    if (cached.beta != beta) cached = {beta, 0, 0, sonine_moment_beta_polynomials(beta)};
+    return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi);
+  }
 
  private:
   static SonineTracerSums finish(const std::array<SonineCollisionIntegrals, sonine_cpq_sources>& C, double eps, double mk, double mi, double Tk,
@@ -55,7 +65,8 @@ class ClosedFormTerms final : public SoninePairTerms {
     std::vector<double> polys;
   };
   const model::Restitution& law_;
-  mutable std::vector<BetaPolynomials> polys_;  // per ordered pair (k, i), made on first use
+  mutable std::vector<BetaPolynomials> polys_;         // per ordered pair (k, i), made on first use
+  mutable std::vector<BetaPolynomials> moment_polys_;  // the same for the moment table
 };
 
 class ImpactSpeedTerms final : public SoninePairTerms {
@@ -76,6 +87,12 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     SonineTracerSums s{{}, -weight * q.energy[0] / (3.0 * Ak)};
     s.C.add(q.C, weight);
     return s;
+  }
+  std::array<double, 15> moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+    const double Ak = Tk / mk, Ai = Ti / mi;
+    std::array<double, 15> H = sonine_moment_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai));
+    for (double& x : H) x *= weight;
+    return H;
   }
 
  private:

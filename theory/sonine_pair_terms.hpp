@@ -7,6 +7,7 @@
 // never the law, so a viscoelastic gas gets the same kinetic level as a constant-ε one. The quadrature keeps
 // the ε of its last evaluation per pair (no allocation, the same ε for the cooling and the decay closures
 // when they share the object): like the closures, one object serves one integration at a time.
+#include <array>
 #include <cstddef>
 #include <memory>
 
@@ -27,6 +28,11 @@ class SoninePairTerms {
   // coefficients of the partner's a₂, a₃ in C_pq (closed forms at constant ε; the quadrature leaves them zero).
   virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
                                   std::size_t modes, bool partner_sonine) const = 0;
+  // The order-3 moment closure's pair rates (sonine_moment_cooling.hpp): rates of ⟨c^(2p)⟩_k, p = 1…3, from
+  // collisions with i per unit Sonine coefficient, entry (p − 1)·5 + source (Maxwell, own a₂, own a₃, partner's a₂,
+  // partner's a₃); weight = n_i σ_ki² χ_ki. Closed forms at constant ε (sonine_moment_table.hpp), the quadrature
+  // over the impact speed otherwise (sonine_quadrature.hpp).
+  virtual std::array<double, 15> moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

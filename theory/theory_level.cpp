@@ -33,6 +33,7 @@ class PaperLevel final : public TheoryLevel {
     return theory::initial_temperatures(init, rates);
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return theory::settled_temperatures(rates).T; }
+  SonineHcs hcs(const CollisionRates& rates) const override { return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()); }
   TracerLimit tracer(const CollisionRates& rates) const override { return tracer_limit(rates); }
 };
 
@@ -52,18 +53,21 @@ class PaperLevel final : public TheoryLevel {
 // t = 10 (the lightest species), the model error its scenes judge with.
 constexpr std::size_t max_sonine_species = 1000;
 
-// The kinetic level's cooling closure: the first Sonine (a₂ relaxing; sonine_cooling.hpp, its pair terms by
-// quadrature over the impact speed for a viscoelastic law), or with cooling_order 3 a₂ and a₃ relaxing
-// (sonine_moment_cooling.hpp) — at constant ε (closed forms at fixed ε only) and up to max_third_sonine_species,
-// above which its pair terms (15 polynomials per ordered pair at every new temperature set, the Krylov solver's
-// products included) cost 33 s on v2 Fig. 6's 691 species against the first Sonine's 7 s. z0: the initial
-// unknowns (empty: the Maxwellian start).
+// The kinetic level's cooling closure: the first Sonine (a₂ relaxing; sonine_cooling.hpp), or with cooling_order 3
+// a₂ and a₃ relaxing (sonine_moment_cooling.hpp) up to max_third_sonine_species, above which its pair terms (15
+// polynomials per ordered pair at every new temperature set, the Krylov solver's products included) cost 33 s on
+// v2 Fig. 6's 691 species against the first Sonine's 7 s. Both take their pair terms from `terms`: closed forms at
+// constant ε, the quadrature over the impact speed for a viscoelastic law. z0: the initial unknowns (empty: the
+// Maxwellian start).
 constexpr std::size_t max_third_sonine_species = 100;
+bool third_sonine_applies(const CollisionRates& rates, int cooling_order) {
+  return cooling_order == 3 && rates.size() <= max_third_sonine_species;
+}
 std::shared_ptr<const CoolingModel> kinetic_cooling(const CollisionRates& rates, std::vector<double> z0,
                                                     std::shared_ptr<const SoninePairTerms> terms, int cooling_order) {
-  if (cooling_order < 3 || rates.law().is_viscoelastic() || rates.size() > max_third_sonine_species)
+  if (!third_sonine_applies(rates, cooling_order))
     return std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::move(z0), std::move(terms));
-  return std::make_shared<SonineMomentCooling>(rates, sonine_moment_max, std::move(z0));
+  return std::make_shared<SonineMomentCooling>(rates, sonine_moment_max, std::move(z0), std::move(terms));
 }
 
 bool dissipative(const model::Restitution& law, std::size_t k, std::size_t i) {
@@ -126,14 +130,18 @@ class KineticLevel final : public TheoryLevel {
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     if (!sonine_applies(rates) || rates.law().is_viscoelastic()) return theory::settled_temperatures(rates).T;
-    return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values()).T;  // Σ x_k T_k = ⟨T⟩ = 1
+    return hcs(rates).T;  // Σ x_k T_k = ⟨T⟩ = 1
+  }
+  SonineHcs hcs(const CollisionRates& rates) const override {
+    return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values(), false, SonineSolver::automatic,
+                      third_sonine_applies(rates, cooling_order_) ? 3 : 2);  // constant ε (a viscoelastic gas has no HCS)
   }
   TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, order_}); }
 
  private:
   static std::string level_name(std::size_t order, int cooling_order, bool shaped) {
-    if (cooling_order == 3) return shaped ? "kinetic-cooling3-shaped" : "kinetic-cooling3";
-    return order == kinetic_sonine_order ? "kinetic" : "kinetic-sonine" + std::to_string(order);
+    const std::string base = cooling_order == 3 ? (shaped ? "kinetic-cooling3-shaped" : "kinetic-cooling3") : "kinetic";
+    return order == kinetic_sonine_order ? base : base + "-sonine" + std::to_string(order);
   }
   std::size_t order_;
   int cooling_order_;
@@ -143,14 +151,23 @@ class KineticLevel final : public TheoryLevel {
 
 }  // namespace
 
+std::string companion_level(const std::string& level, const std::string& correction) {
+  if (correction == "paper" || correction == "kinetic") return correction;
+  if (correction == "cooling3") return "kinetic-cooling3";
+  if (correction == "sonine1" && (level == "kinetic" || level == "kinetic-cooling3")) return level + "-sonine1";
+  throw std::invalid_argument("no companion level '" + correction + "' beside the level '" + level + "'");
+}
+
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "paper") return std::make_unique<PaperLevel>();
   if (name == "kinetic") return std::make_unique<KineticLevel>(kinetic_sonine_order);
   if (name == "kinetic-cooling3") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3);
   if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
-  for (std::size_t n = 1; n <= max_sonine_modes; ++n)
+  for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-shaped)");
+    if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
+  }
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped)");
 }
 
 }  // namespace granmix::theory

@@ -8,7 +8,8 @@
 //            (SonineDecay: first-Sonine ν_k at short times, D to Sonine order 4 at long times, §3), settled states of the
 //            first-Sonine HCS (MG App. A); for a viscoelastic law the same integrals by quadrature over the
 //            impact speed (sonine_quadrature.hpp). Variants: kinetic-sonineN (D to order N), kinetic-cooling3
-//            (temperatures with a₂ and a₃, sonine_moment_cooling.hpp), kinetic-cooling3-shaped (and the a's in D).
+//            (temperatures with a₂ and a₃, sonine_moment_cooling.hpp, and the order-3 HCS; judged by v1 Figs. 2, 9, 10),
+//            kinetic-cooling3-sonineN, kinetic-cooling3-shaped (and the a's in D).
 // Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
 // Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
 // D to Sonine order 4); both give the MSD and the TAMSD from one velocity correlation in closed form (the
@@ -22,6 +23,7 @@
 #include "diffusion.hpp"
 #include "model/scene.hpp"
 #include "msd.hpp"
+#include "sonine_hcs.hpp"
 #include "temperature_history.hpp"
 #include "tracer_limit.hpp"
 
@@ -43,12 +45,23 @@ class TheoryLevel {
                                                    TemperatureOptions& opt) const = 0;
   // The level's settled temperatures (⟨T⟩ = 1).
   virtual std::vector<double> settled_temperatures(const CollisionRates& rates) const = 0;
+  // The level's homogeneous cooling state in MG's reduced form (γ, cumulants, Φ_k; constant restitution): MG's
+  // first Sonine for the paper level (the MG figures' theory) and the kinetic level, Sonine order 3 (a₃ too) for
+  // kinetic-cooling3.
+  virtual SonineHcs hcs(const CollisionRates& rates) const = 0;
   // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1.
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
 };
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to
-// Sonine order N, the lower order of a scene's correction_from = "sonineN"); throws std::invalid_argument otherwise.
+// Sonine order N, the lower order of a scene's correction_from = "sonineN"), the variants "kinetic-cooling3",
+// "kinetic-cooling3-shaped" and "kinetic-cooling3-sonineN"; throws std::invalid_argument otherwise.
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name);
+
+// The level whose curves a scene at `level` compares with for correction_from = `correction` (theory.tsv columns
+// `<quantity>_<correction>`): "paper", "kinetic", "cooling3" → kinetic-cooling3, "sonine1" → the level with the
+// first-Sonine D (kinetic-sonine1, kinetic-cooling3-sonine1). Throws std::invalid_argument where there is none
+// (scene.cpp refuses those scenes with a message first).
+std::string companion_level(const std::string& level, const std::string& correction);
 
 }  // namespace granmix::theory

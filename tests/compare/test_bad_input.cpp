@@ -84,7 +84,11 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
       {"lower level twice", judged("[\"paper\", \"paper\"]"), ":20: compare.quantities[1].correction_from: \"paper\" given twice"},
       {"no lower levels", judged("[]"), "compare.quantities[1].correction_from: empty array"},
       {"lower level of another level", judged("[\"paper\", \"sonine1\"]"),
-       "compare.correction_from: \"paper\" is a lower level of the kinetic level, but theory.level is \"paper\""},
+       "compare.correction_from: \"paper\" is a lower level of the kinetic levels, but theory.level is \"paper\""},
+      {"kinetic companion of a level without order-3 temperatures", replace(judged("\"kinetic\""), "msd = \"eq17\"", "level = \"kinetic\""),
+       "compare.correction_from: \"kinetic\" is the first-Sonine temperatures under a kinetic-cooling3 level, but theory.level is \"kinetic\""},
+      {"next order of the order-3 level itself", replace(judged("\"cooling3\""), "msd = \"eq17\"", "level = \"kinetic-cooling3\""),
+       "compare.correction_from: \"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"kinetic-cooling3\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");

@@ -41,12 +41,19 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   REQUIRE(t.comments.size() == 6);
   CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
   CHECK(t.comments[1].find("sha256: ") != std::string::npos);
-  // The kinetic level judged, the paper level beside it (issue 12), and the kinetic level with first-Sonine D
-  // (the msd quantities' correction_from names "sonine1").
-  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper", "T_sonine1", "msd_sonine1"});
-  // D does not enter the temperatures: the two kinetic variants share them (to the solver's tolerance; the
-  // extra VACF mode changes CVODE's steps), while they differ from the paper level's by 1–8%.
-  for (std::size_t row = 3; row < t.rows.size(); row += 7) CHECK(t.at(row, "T") == Approx(t.at(row, "T_sonine1")).epsilon(1e-7));
+  // The kinetic-cooling3 level judged, the paper level beside it (issue 12), the same level with first-Sonine D
+  // (the msd quantities' correction_from names "sonine1") and the kinetic level (T's names "kinetic").
+  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper", "T_sonine1", "msd_sonine1", "T_kinetic",
+                                              "msd_kinetic"});
+  // D does not enter the temperatures: the level and its first-Sonine-D companion share them (to the solver's
+  // tolerance; the extra VACF modes change CVODE's steps), while the order-3 temperatures differ from the kinetic
+  // level's by up to 4% (the light species at t ~ 10) and from the paper level's by 1–8%.
+  double cooling3 = 0.0;
+  for (std::size_t row = 3; row < t.rows.size(); row += 7) {
+    CHECK(t.at(row, "T") == Approx(t.at(row, "T_sonine1")).epsilon(1e-7));
+    cooling3 = std::max(cooling3, std::abs(t.at(row, "T") / t.at(row, "T_kinetic") - 1.0));
+  }
+  CHECK(cooling3 > 0.01);
   REQUIRE(t.rows.size() == 41 * 3);
   // Ballistic start: both levels start from the same state (within 0.5% at t = 0.01, where they differ
   // only in the O(νt) decay of the velocity memory); by t = 1e6 the
@@ -153,7 +160,15 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   const auto ordered = nlohmann::ordered_json::parse(r.output);
   std::vector<std::string> keys;
   for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());
-  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor", "D_sonine_factors"});
+  CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor", "D_sonine_factors",
+                                         "T_ratio_sonine3", "c_sonine3", "a3_sonine3"});
+  // Sonine order 3 (the level kinetic-cooling3's HCS), computed in-process.
+  const auto third = theory::sonine_hcs(mix, model::Restitution::constant(2, 0.5), model::dilute_contact_values(2), false,
+                                        theory::SonineSolver::automatic, 3);
+  CHECK(j["species"][1]["T_ratio_sonine3"].get<double>() == Approx(third.T[1] / third.T[0]).epsilon(1e-14));
+  CHECK(j["species"][0]["c_sonine3"].get<double>() == Approx(third.c[0]).epsilon(1e-14));
+  CHECK(j["species"][0]["a3_sonine3"].get<double>() == Approx(third.a3[0]).epsilon(1e-14));
+  CHECK(j["zeta_star_sonine3"].get<double>() == Approx(third.zeta_star).epsilon(1e-14));
   // Second-Sonine factor D_k[2]/D_k[1] at the settled ratios, computed in-process (0.9209 for the light species).
   for (std::size_t k = 0; k < 2; ++k) {
     CHECK(j["species"][k]["D_sonine2_factor"].get<double>() == Approx(theory::sonine_factor(rates, k, d.T.data(), 2)).epsilon(1e-14));
@@ -390,10 +405,13 @@ TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised 
 
 TEST_CASE("granmix theory mg-fig06: gamma(n*)/gamma(0) with Enskog chi against the in-process Sonine solver", "[compare]") {
   const Tsv t = theory_of("mg-fig06-alpha0.6");
-  CHECK(t.columns == std::vector<std::string>{"n_star", "species", "gamma", "gamma_maxwell", "gamma_ratio", "gamma_ratio_maxwell"});
+  CHECK(t.columns == std::vector<std::string>{"n_star", "species", "gamma", "gamma_maxwell", "gamma_ratio", "gamma_ratio_maxwell", "gamma_cooling3",
+                                              "gamma_ratio_cooling3"});
   const auto law = model::Restitution::constant(2, 0.6);
   const double g0 = theory::sonine_hcs(model::montanero_garzo_binary(2, 0.5, 2, 0), law, model::dilute_contact_values(2)).gamma();
   const double g0_maxwell = theory::sonine_hcs(model::montanero_garzo_binary(2, 0.5, 2, 0), law, model::dilute_contact_values(2), true).gamma();
+  const double g0_third = theory::sonine_hcs(model::montanero_garzo_binary(2, 0.5, 2, 0), law, model::dilute_contact_values(2), false,
+                                             theory::SonineSolver::automatic, 3).gamma();
   CHECK(t.at(0, "n_star") == 0.0);
   CHECK(t.at(0, "gamma_ratio") == 1.0);
   for (std::size_t r = 3; r < t.rows.size(); r += 15) {  // species 0 rows (γ) of every fifth n*
@@ -405,6 +423,10 @@ TEST_CASE("granmix theory mg-fig06: gamma(n*)/gamma(0) with Enskog chi against t
     // not the Sonine one (they differ by 0.06-0.35% here, well above the 1e-12 asked).
     const double gm = theory::sonine_hcs(mix, law, model::enskog_contact_values(mix), true).gamma();
     CHECK(t.at(r, "gamma_ratio_maxwell") == Approx(gm / g0_maxwell).epsilon(1e-12));
+    // The scene's model error is the next Sonine order's correction: the same ratio at order 3 (Enskog χ in its pair terms).
+    const double g3 = theory::sonine_hcs(mix, law, model::enskog_contact_values(mix), false, theory::SonineSolver::automatic, 3).gamma();
+    CHECK(t.at(r, "gamma_cooling3") == Approx(g3).epsilon(1e-12));
+    CHECK(t.at(r, "gamma_ratio_cooling3") == Approx(g3 / g0_third).epsilon(1e-12));
   }
 }
 
