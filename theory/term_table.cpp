@@ -13,6 +13,7 @@ TermTable::TermTable(const std::vector<Term>& rows) {
     groups_.back().beta[std::size_t(r.ib)] = r.coefficient;  // rows sorted by entry, ia, ib
     groups_.back().degree = std::max(groups_.back().degree, r.ib);
   }
+  for (const Group& g : groups_) entry_.push_back(g.entry), a_index_.push_back((unsigned char)(g.a_index));
 }
 
 std::vector<double> TermTable::beta_polynomials(double beta, std::size_t groups) const {
@@ -37,7 +38,9 @@ void TermTable::evaluate(const std::vector<double>& polys, double a, double* out
   apow[a_lowest] = 1.0;
   for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
   for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
-  for (std::size_t j = 0; j < polys.size(); ++j) out[groups_[j].entry] += polys[j] * apow[std::size_t(groups_[j].a_index)];
+  const unsigned* entry = entry_.data();
+  const unsigned char* a_index = a_index_.data();
+  for (std::size_t j = 0; j < polys.size(); ++j) out[entry[j]] += polys[j] * apow[a_index[j]];
 }
 
 }  // namespace granmix::theory
