@@ -38,6 +38,20 @@ double largest_rel(const SonineMoments& q, const SonineMoments& c, double w, dou
                    rel(q.Lambda0, c.Lambda0, Ls), rel(q.Lambda_self, c.Lambda_self, Ls), rel(q.Lambda_cross, c.Lambda_cross, Ls)});
 }
 
+// One pair from the two Maxwellians (θ = T/m per component) and σ̂ uniform on the sphere, u = g·σ̂: the samples of
+// the Monte Carlo checks below.
+struct SampledPair {
+  double vk[3], vi[3], e[3];
+  double u = 0.0, vk2 = 0.0, vi2 = 0.0;
+};
+SampledPair sample_pair(std::mt19937_64& gen, std::normal_distribution<double>& N01, double theta_k, double theta_i) {
+  SampledPair p;
+  double en = 0.0;
+  for (int d = 0; d < 3; ++d) p.vk[d] = std::sqrt(theta_k) * N01(gen), p.vi[d] = std::sqrt(theta_i) * N01(gen), p.e[d] = N01(gen), en += p.e[d] * p.e[d];
+  for (int d = 0; d < 3; ++d) p.e[d] /= std::sqrt(en), p.u += (p.vk[d] - p.vi[d]) * p.e[d], p.vk2 += p.vk[d] * p.vk[d], p.vi2 += p.vi[d] * p.vi[d];
+  return p;
+}
+
 }  // namespace
 
 TEST_CASE("Sonine quadrature: constant eps reproduces MG's closed pair terms (Eqs. 39-44) and the closed C_pq to 1e-8", "[theory]") {
@@ -149,10 +163,8 @@ TEST_CASE("Sonine quadrature: against a Monte Carlo of the collision integrals o
   const auto S1 = [](double x) { return 2.5 - x; };
   const double four_pi = 4.0 * std::numbers::pi;
   for (std::size_t n = 0; n < samples; ++n) {
-    double vk[3], vi[3], e[3], en = 0.0;
-    for (int d = 0; d < 3; ++d) vk[d] = std::sqrt(theta_k) * N01(gen), vi[d] = std::sqrt(theta_i) * N01(gen), e[d] = N01(gen), en += e[d] * e[d];
-    double u = 0.0, vk2 = 0.0, vi2 = 0.0;
-    for (int d = 0; d < 3; ++d) e[d] /= std::sqrt(en), u += (vk[d] - vi[d]) * e[d], vk2 += vk[d] * vk[d], vi2 += vi[d] * vi[d];
+    const SampledPair pair = sample_pair(gen, N01, theta_k, theta_i);
+    const double *vk = pair.vk, *e = pair.e, u = pair.u, vk2 = pair.vk2, vi2 = pair.vi2;
     double x[M] = {};
     if (u > 0.0) {
       const double b = mu * (1.0 + eps(u)) * u;
@@ -213,10 +225,8 @@ TEST_CASE("Sonine quadrature: the order-3 moment rates of a viscoelastic pair ag
   const auto S3 = [](double x) { return -x * x * x / 6.0 + 1.75 * x * x - 35.0 / 8.0 * x + 35.0 / 16.0; };
   const double four_pi = 4.0 * std::numbers::pi;
   for (std::size_t n = 0; n < samples; ++n) {
-    double vk[3], vi[3], e[3], en = 0.0;
-    for (int d = 0; d < 3; ++d) vk[d] = std::sqrt(theta_k) * N01(gen), vi[d] = std::sqrt(theta_i) * N01(gen), e[d] = N01(gen), en += e[d] * e[d];
-    double u = 0.0, vk2 = 0.0, vi2 = 0.0;
-    for (int d = 0; d < 3; ++d) e[d] /= std::sqrt(en), u += (vk[d] - vi[d]) * e[d], vk2 += vk[d] * vk[d], vi2 += vi[d] * vi[d];
+    const SampledPair pair = sample_pair(gen, N01, theta_k, theta_i);
+    const double *vk = pair.vk, *e = pair.e, u = pair.u, vk2 = pair.vk2, vi2 = pair.vi2;
     double x[15] = {};
     if (u > 0.0) {
       const auto after = [&](double epsilon) {  // c′² of species k
