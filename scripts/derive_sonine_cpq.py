@@ -15,10 +15,9 @@ Writes the C++ table to stdout (about 1 min, needs only sympy):
     python3 scripts/derive_sonine_cpq.py > theory/sonine_cpq_table.cpp
 tests/theory/test_sonine_modes.cpp checks the table, all three sources, against an independent quadrature.
 """
-import sys
 import sympy as sp
 
-from generated_table import print_table
+from generated_table import print_table, term_rows
 from sonine_pair_algebra import laguerre_of, pair, pair_average, poly
 
 MODES = 5
@@ -38,10 +37,7 @@ def main():
     for src, rs in enumerate(SOURCES):
         for p in range(MODES):
             for q in range(MODES):
-                for (ia, ib), cf in sorted(cpq(p, q, rs).items()):  # a^-p is the lowest power
-                    if not cf.is_Rational:
-                        sys.exit(f"C_{p}{q} (source {rs}): coefficient {cf} is not rational")
-                    rows.append(f"    {{{src}, {p}, {q}, {ia}, {ib}, {sp.Rational(cf).p}.0 / {sp.Rational(cf).q}.0}},")
+                rows += term_rows((src, p, q), cpq(p, q, rs), f"C_{p}{q} (source {rs})")  # a^-p is the lowest power
     print_table("derive_sonine_cpq.py", "C_pq / (beta P) = sum of coefficient * a^ia * beta^ib over the rows of (source, p, q)",
                 "sonine_cpq_table.hpp", "SonineCpqTerm", "sonine_cpq_term_count", "sonine_cpq_terms", rows)
 

@@ -20,10 +20,9 @@ settles at Brilliantov & Poschel's second-Sonine a_2, a_3.
 Writes the C++ table to stdout (about 2 s, needs only sympy):
     python3 scripts/derive_sonine_moments.py > theory/sonine_moment_table.cpp
 """
-import sys
 import sympy as sp
 
-from generated_table import print_table
+from generated_table import print_table, term_rows
 from sonine_pair_algebra import laguerre_of, pair, pair_average
 
 P_MAX = 3
@@ -44,10 +43,7 @@ def main():
     rows = []
     for p in range(1, P_MAX + 1):
         for src, (q, r) in enumerate(SOURCES):
-            for (ia, ib), cf in sorted(moment(p, q, r).items()):
-                if not cf.is_Rational:
-                    sys.exit(f"H({p}; {q}, {r}): coefficient {cf} is not rational")
-                rows.append(f"    {{{p}, {src}, {ia}, {ib}, {sp.Rational(cf).p}.0 / {sp.Rational(cf).q}.0}},")
+            rows += term_rows((p, src), moment(p, q, r), f"H({p}; {q}, {r})")
     print_table("derive_sonine_moments.py", "H(p; source) / (beta P) = sum of coefficient * a^ia * beta^ib over the rows of (p, source)",
                 "sonine_moment_table.hpp", "SonineMomentTerm", "sonine_moment_term_count", "sonine_moment_terms", rows)
 

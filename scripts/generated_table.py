@@ -1,5 +1,20 @@
 """Prints a generated C++ table of exact rational terms (theory/sonine_cpq_table.cpp, theory/sonine_moment_table.cpp):
 the provenance lines, a static_assert that the header's count matches, and the array of rows."""
+import sys
+
+import sympy as sp
+
+
+def term_rows(keys, powers, what):
+    """The C++ rows {keys..., ia, ib, p.0 / q.0} of one entry's {(ia, ib): coefficient}, in order of the powers;
+    stops with a message if a coefficient is not rational (the tables hold exact terms only)."""
+    rows = []
+    for (ia, ib), cf in sorted(powers.items()):
+        if not cf.is_Rational:
+            sys.exit(f"{what}: coefficient {cf} is not rational")
+        r = sp.Rational(cf)
+        rows.append("    {" + ", ".join(str(k) for k in keys) + f", {ia}, {ib}, {r.p}.0 / {r.q}.0}},")
+    return rows
 
 
 def print_table(script, what, header, term, count, array, rows):
