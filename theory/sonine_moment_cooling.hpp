@@ -28,10 +28,10 @@ namespace granmix::theory {
 // The rates of ⟨c^(2p)⟩_k, p = 1..3, at fixed θ_k from collisions with species i, per unit Sonine coefficient:
 // entry (p − 1)·5 + source, sources Maxwell, own a₂, own a₃, partner's a₂, partner's a₃ (sonine_moment_table.hpp);
 // weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i + m_k), A = T/m of k and i.
-std::array<double, 15> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai);
+SonineMomentRates sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai);
 // The same from the table's polynomials in β = μ_ik(1 + ε) (constant per pair: callers keep them).
 std::vector<double> sonine_moment_beta_polynomials(double beta);
-std::array<double, 15> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai);
+SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai);
 
 class SonineMomentCooling final : public CoolingModel {
  public:

@@ -19,6 +19,8 @@ struct SonineMomentTerm {
 
 inline constexpr int sonine_moment_max = 3;      // moments ⟨c²⟩ … ⟨c⁶⟩, Sonine coefficients a₂, a₃
 inline constexpr int sonine_moment_sources = 5;  // Maxwell, own a₂, own a₃, partner's a₂, partner's a₃
+// The rates of one pair per unit Sonine coefficient, entry (p − 1)·sonine_moment_sources + source.
+using SonineMomentRates = std::array<double, std::size_t(sonine_moment_max * sonine_moment_sources)>;
 inline constexpr std::size_t sonine_moment_term_count = 187;
 extern const std::array<SonineMomentTerm, sonine_moment_term_count> sonine_moment_terms;
 

@@ -13,6 +13,7 @@
 
 #include "model/restitution.hpp"
 #include "sonine2_diffusion.hpp"
+#include "sonine_moment_table.hpp"
 #include "sonine_terms.hpp"
 
 namespace granmix::theory {
@@ -32,7 +33,7 @@ class SoninePairTerms {
   // collisions with i per unit Sonine coefficient, entry (p − 1)·5 + source (Maxwell, own a₂, own a₃, partner's a₂,
   // partner's a₃); weight = n_i σ_ki² χ_ki. Closed forms at constant ε (sonine_moment_table.hpp), the quadrature
   // over the impact speed otherwise (sonine_quadrature.hpp).
-  virtual std::array<double, 15> moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
+  virtual SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

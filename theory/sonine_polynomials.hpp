@@ -14,6 +14,12 @@ inline double sonine_S1(double x) { return 2.5 - x; }
 inline double sonine_S2(double x) { return 0.5 * x * x - 2.5 * x + 15.0 / 8.0; }
 inline double sonine_S3(double x) { return -x * x * x / 6.0 + 1.75 * x * x - 35.0 / 8.0 * x + 35.0 / 16.0; }
 
+// E[S_p(c²) | c_z] = L_p^(−1/2)(y), y = c_z²: the two perpendicular components, |c_⊥|² ~ Exp(1) over φ_M, averaged
+// out (the Laguerre index drops by one per exponential convolution). The quadratures over the impact speed use them
+// for the partner's Sonine weight (sonine_quadrature.cpp).
+inline double sonine_axial_S2(double y) { return 0.5 * y * y - 1.5 * y + 0.375; }
+inline double sonine_axial_S3(double y) { return -y * y * y / 6.0 + 1.25 * y * y - 1.875 * y + 0.3125; }
+
 // S[p] = L_p^(3/2)(x), p < modes (the recurrence (n+1)L_{n+1} = (2n + 5/2 − x)L_n − (n + 3/2)L_{n−1}).
 inline void sonine_vector_basis(double x, std::size_t modes, double* S) {
   if (modes > 0) S[0] = 1.0;

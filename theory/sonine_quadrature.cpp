@@ -117,7 +117,7 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
     SonineCollisionIntegrals c;
     for (std::size_t h = 0; h < hermite.x.size(); ++h) {
       const double W = sW * hermite.x[h], zk = W + alpha * u, zk1 = zk - bu, zi = W - (1.0 - alpha) * u;
-      const double yi = zi * zi * inv2i, S2i = 0.5 * yi * yi - 1.5 * yi + 0.375;  // E[S₂(c_i²) | v_iz]
+      const double S2i = sonine_axial_S2(zi * zi * inv2i);  // E[S₂(c_i²) | v_iz]
       for (std::size_t l = 0; l < laguerre.x.size(); ++l) {
         const double g = hermite.weight[h] * laguerre.weight[l], R = 2.0 * theta_k * laguerre.x[l];
         const double v2 = R + zk * zk, v21 = R + zk1 * zk1;  // v_k², v_k′²
@@ -140,31 +140,31 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
   return out;
 }
 
-std::array<double, 15> sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
   const WRule& rule = w_rule();
   const GaussRule &hermite = mode_rules().hermite[4], &laguerre = mode_rules().laguerre[4];  // 8 and 4 points
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
-  std::array<double, 15> out{};
+  SonineMomentRates out{};
+  constexpr std::size_t NS = sonine_moment_sources;
   for (std::size_t n = 0; n < rule.w10.size(); ++n) {
     const double u = u_scale * rule.w10[n], bu = mu * (1.0 + eps_nodes[n]) * u;
-    std::array<double, 15> e{};
+    SonineMomentRates e{};
     for (std::size_t h = 0; h < hermite.x.size(); ++h) {
       const double W = sW * hermite.x[h], zk = W + alpha * u, zk1 = zk - bu, zi = W - (1.0 - alpha) * u;
-      // E[S_p(c_i²) | v_iz] = L_p^(−1/2)(y), y = v_iz²/(2θ_i): the perpendicular part, Exp(1) in these units, averaged out.
-      const double y = zi * zi * inv2i, S2i = 0.5 * y * y - 1.5 * y + 0.375, S3i = -y * y * y / 6.0 + 1.25 * y * y - 1.875 * y + 0.3125;
+      const double y = zi * zi * inv2i, S2i = sonine_axial_S2(y), S3i = sonine_axial_S3(y);  // E[S_p(c_i²) | v_iz]
       for (std::size_t l = 0; l < laguerre.x.size(); ++l) {
         const double g = hermite.weight[h] * laguerre.weight[l], r = laguerre.x[l];  // r = |v_k⊥|²/(2θ_k)
         const double x = r + zk * zk * inv2k, x1 = r + zk1 * zk1 * inv2k;          // c², c′²
         const double weights[5] = {1.0, sonine_S2(x), sonine_S3(x), S2i, S3i};
         const double d[3] = {x1 - x, x1 * x1 - x * x, x1 * x1 * x1 - x * x * x};
         for (std::size_t p = 0; p < 3; ++p)
-          for (std::size_t src = 0; src < 5; ++src) e[p * 5 + src] += g * weights[src] * d[p];
+          for (std::size_t src = 0; src < NS; ++src) e[p * NS + src] += g * weights[src] * d[p];
       }
     }
     const double m = flux * rule.weight[n];
-    for (std::size_t j = 0; j < 15; ++j) out[j] += m * e[j];
+    for (std::size_t j = 0; j < out.size(); ++j) out[j] += m * e[j];
   }
   return out;
 }

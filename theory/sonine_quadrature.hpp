@@ -19,6 +19,7 @@
 #include <functional>
 
 #include "sonine2_diffusion.hpp"
+#include "sonine_moment_table.hpp"
 #include "sonine_terms.hpp"
 
 namespace granmix::theory {
@@ -48,7 +49,7 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 // own a₃, partner's a₂, partner's a₃), with f = f_M(1 + a₂S₂ + a₃S₃) kept to first order in the a's; at constant ε
 // these are the closed forms of sonine_moment_pair (tested). E[· | u] exact: Hermite 8 points in W (degree 12:
 // S₃ times the change of v⁶), Laguerre 4 in |v_k⊥|² (degree 6), E[S₃(c_i²) | v_iz] = L₃^(−1/2)(y) in closed form.
-std::array<double, 15> sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
 
 // The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
 // (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the
