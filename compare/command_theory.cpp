@@ -1,4 +1,7 @@
 // granmix theory SCENE.toml [--out DIR]  ->  DIR/<scene>/theory.tsv (design.md §3–4).
+// --level NAME: one theory level's curves alone (any level theory_level.hpp names, e.g. kinetic-sonine3 or
+// kinetic-cooling3-shaped, also those a scene may not judge) -> DIR/<scene>/theory_<NAME>.tsv, to compute a
+// model error from any next order by hand (README, "How far the computed bounds can be tightened").
 #include <cstdio>
 #include <filesystem>
 
@@ -7,7 +10,9 @@
 #include "model/scene.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
+#include "model/errors.hpp"
 #include "theory/scene_theory.hpp"
+#include "theory/theory_level.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -17,15 +22,22 @@ std::function<int()> add_theory_command(CLI::App& app) {
   auto scene = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>("out");
   cmd->add_option("scene", *scene, "scene file (TOML)")->required();
+  auto level = std::make_shared<std::string>();
   cmd->add_option("--out", *out, "output folder")->capture_default_str();
-  return [scene, out]() {
+  cmd->add_option("--level", *level, "one level's curves alone -> theory_<level>.tsv (paper, kinetic, kinetic-sonineN, kinetic-cooling3, ...)");
+  return [scene, out, level]() {
     // Everything is read and checked before anything is written.
     const model::Scene s = model::load_scene(*scene);
+    if (!level->empty()) try {
+        theory::make_theory_level(*level);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(std::string("--level: ") + e.what());
+      }
     interrupts::require_writable_folder(*out);  // exit 2 naming --out, not a filesystem error after the solve
-    const theory::TheoryResult r = theory::run_theory(s);
+    const theory::TheoryResult r = level->empty() ? theory::run_theory(s) : theory::run_level(s, *level);
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
-    const std::filesystem::path file = std::filesystem::path(*out) / s.name / "theory.tsv";
+    const std::filesystem::path file = std::filesystem::path(*out) / s.name / (level->empty() ? "theory.tsv" : "theory_" + *level + ".tsv");
     write_atomically(file, format_tsv(provenance_header(p), r.table));
     std::printf("%s: %zu rows -> %s  (%.3f s; CVODE %ld steps, %ld RHS evaluations)\n", s.name.c_str(),
                 r.table.rows.size(), file.c_str(), r.seconds, r.stats.steps, r.stats.rhs_evals);

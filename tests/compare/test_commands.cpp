@@ -67,6 +67,37 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   CHECK(t.at(last, "msd") == Approx(0.5 * (t.at(last + 1, "msd") + t.at(last + 2, "msd"))).epsilon(1e-14));
 }
 
+TEST_CASE("granmix theory --level: one level alone equals the scene run's companion column - bad names exit 2, nothing written",
+          "[compare]") {
+  const Tsv scene = theory_of("bo1-fig02");
+  const auto d = test::fresh_dir("theory-level");
+  for (const auto& [level, suffix] : {std::pair<std::string, std::string>{"kinetic-cooling3-sonine1", "_sonine1"}, {"kinetic", "_kinetic"}}) {
+    const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level " + level + " --out " + d.string());
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const Tsv t = read_tsv(d / "bo1-fig02" / ("theory_" + level + ".tsv"));
+    CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
+    REQUIRE(t.columns == std::vector<std::string>{"t", "species", "T", "msd"});
+    REQUIRE(t.rows.size() == scene.rows.size());
+    for (std::size_t row = 0; row < t.rows.size(); ++row)
+      for (const char* c : {"T", "msd"}) {
+        INFO(level << " row " << row << " " << c);
+        CHECK(t.at(row, c) == Approx(scene.at(row, std::string(c) + suffix)).epsilon(1e-12));
+      }
+  }
+  // A level the judged one is not: kinetic-sonine3 moves the light species' long-time MSD (its last Sonine term of D).
+  REQUIRE(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic-sonine3 --out " + d.string()).code == 0);
+  const Tsv s3 = read_tsv(d / "bo1-fig02" / "theory_kinetic-sonine3.tsv");
+  const Tsv k = read_tsv(d / "bo1-fig02" / "theory_kinetic.tsv");
+  const std::size_t light = s3.rows.size() - 2;  // last time, species 1
+  CHECK(std::abs(s3.at(light, "msd") / k.at(light, "msd") - 1.0) > 1e-3);
+  const auto bad = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic-sonine9 --out " + d.string());
+  CHECK(bad.code == 2);
+  CHECK(bad.output.find("--level") != std::string::npos);
+  CHECK(bad.output.find("allowed") != std::string::npos);
+  CHECK(!std::filesystem::exists(d / "bo1-fig02" / "theory_kinetic-sonine9.tsv"));
+}
+
 namespace {
 
 // An independent transcription of the Maxwellian rates of physics-beyond.md §1 (not the library's):
