@@ -17,7 +17,7 @@ the scenes' z; the script checks it). A worst ratio above 1 means that bound wou
 Usage: scripts/bound_study.py path/to/granmix OUT_DIR [OUT_DIR ...]   (OUT_DIR: a `granmix validate --out` folder)
 Output: one TSV row per scene and quantity on stdout.
 """
-import collections, os, re, subprocess, sys, tempfile, tomllib
+import collections, os, subprocess, sys, tempfile, tomllib
 
 granmix, outdirs = sys.argv[1], sys.argv[2:]
 scene_dir = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "compare", "scenes")
@@ -53,9 +53,9 @@ with tempfile.TemporaryDirectory() as tmp:
         if any(q.get("z", 4) != 4 for q in quantities):
             sys.exit("%s: a D-dependent quantity with z != 4 (the script assumes 4)" % file)
         name = scene["scene"]["name"]
-        tables = {l: level_table(path, name, l, tmp)
-                  for l in (level, level + "-sonine3", "kinetic-cooling3" if level == "kinetic" else "kinetic")}
-        last_D, closure = tables[level + "-sonine3"], tables["kinetic-cooling3" if level == "kinetic" else "kinetic"]
+        judged = level_table(path, name, level, tmp)
+        last_D = level_table(path, name, level + "-sonine3", tmp)
+        closure = level_table(path, name, "kinetic-cooling3" if level == "kinetic" else "kinetic", tmp)
         worst = collections.defaultdict(lambda: [0, 0.0, 0.0, 0.0, 0.0, 0.0])
         for out in outdirs:
             dev_file = os.path.join(out, name, "deviations.tsv")
@@ -72,7 +72,7 @@ with tempfile.TemporaryDirectory() as tmp:
                 relative = next(q.get("relative", 0.0) for q in quantities
                                 if q["name"] == r["quantity"].split("[")[0] and k[1] in q.get("species", [k[1]]))
                 theory, dsmc, sigma = float(r["theory"]), float(r["dsmc"]), float(r["dsmc_err"])
-                mine = float(tables[level][k][column])
+                mine = float(judged[k][column])
                 if abs(mine / theory - 1) > 1e-9:
                     sys.exit("%s %s: the run's theory %.9g is not this build's %.9g (rerun validate)" % (name, r["quantity"], theory, mine))
                 B = relative + abs(mine - float(last_D[k][column])) / abs(mine) + abs(mine - float(closure[k][column])) / abs(mine)
