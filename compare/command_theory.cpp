@@ -21,8 +21,8 @@ std::function<int()> add_theory_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("theory", "theory curves of a scene -> DIR/<scene>/theory.tsv");
   auto scene = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>("out");
+  auto level = std::make_shared<std::string>();  // empty: the scene's own level and companions -> theory.tsv
   cmd->add_option("scene", *scene, "scene file (TOML)")->required();
-  auto level = std::make_shared<std::string>();
   cmd->add_option("--out", *out, "output folder")->capture_default_str();
   cmd->add_option("--level", *level, "one level's curves alone -> theory_<level>.tsv (paper, kinetic, kinetic-sonineN, kinetic-cooling3, ...)");
   return [scene, out, level]() {

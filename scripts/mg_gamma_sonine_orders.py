@@ -15,6 +15,8 @@ Usage: scripts/mg_gamma_sonine_orders.py [path/to/granmix]   (about 30 s; needs 
 """
 import json, math, subprocess, sys
 
+import sympy as sp
+
 from derive_sonine_moments import moment
 
 granmix = sys.argv[1] if len(sys.argv) > 1 else "build/granmix"
@@ -23,7 +25,7 @@ H = {}
 for p in range(1, K_MAX + 1):
     for q in [0] + list(range(2, K_MAX + 1)):
         for r in [0] + list(range(2, K_MAX + 1)):
-            if (q and r and max(q, r) > 3) or (q and r and p > 3):
+            if q and r and max(p, q, r) > 3:
                 continue  # products are needed at K = 3 only (the full closure)
             H[p, q, r] = [(ia, ib, float(cf)) for (ia, ib), cf in moment(p, q, r).items()]
 
@@ -36,35 +38,15 @@ def m(p):  # <c^2p> over the Maxwellian, c^2 ~ Gamma(3/2)
     return math.gamma(p + 1.5) / math.gamma(1.5)
 
 
-def binom(x, k):
-    out = 1.0
-    for i in range(k):
-        out *= (x - i) / (i + 1)
-    return out
-
-
-def w(p, q):  # <c^2p S_q(c^2)> / <c^2p>: <c^4> = m(2)(1 + a2), <c^6> = m(3)(1 + 3a2 - a3), ...
-    return sum((-1) ** j * binom(q + 0.5, q - j) / math.factorial(j) * m(p + j) for j in range(q + 1)) / m(p)
-
-
-def solve_linear(A, b):
-    n = len(b)
-    M = [row[:] + [b[i]] for i, row in enumerate(A)]
-    for c in range(n):
-        piv = max(range(c, n), key=lambda r: abs(M[r][c]))
-        M[c], M[piv] = M[piv], M[c]
-        for r in range(c + 1, n):
-            f = M[r][c] / M[c][c]
-            for j in range(c, n + 1):
-                M[r][j] -= f * M[c][j]
-    x = [0.0] * n
-    for r in range(n - 1, -1, -1):
-        x[r] = (M[r][n] - sum(M[r][j] * x[j] for j in range(r + 1, n))) / M[r][r]
-    return x
+def w(p, q):  # <c^2p S_q(c^2)> / <c^2p>: <c^4> = m(2)(1 + a2), <c^6> = m(3)(1 + 3a2 - a3), ... (S_q = L_q^(1/2))
+    return float(sum((-1) ** j * sp.binomial(q + sp.Rational(1, 2), q - j) / sp.factorial(j) * sp.rf(p + sp.Rational(3, 2), j)
+                     for j in range(q + 1)))
 
 
 def hcs_gamma(mu, delta, alpha, K, full=False):
-    """gamma = T1/T2 and c_1 of the MG binary (montanero_garzo_binary: m = mu, 1; sigma = 1, 1; x1 = delta/(1+delta))."""
+    """gamma = T1/T2 and c_1 of the MG binary (montanero_garzo_binary: m = mu, 1; sigma = 1, 1; x1 = delta/(1+delta)).
+    Equations: equal cooling rates zeta_1 = zeta_2 (MG Eq. 45) and the steady balances of <c^2p>_k, p = 2..K,
+    d<c^2p>/dt = R_kp + p zeta_k <c^2p> = 0 (theory/sonine_moment_cooling.hpp), zeta_k = -R_k1 / (3/2)."""
     x1 = delta / (1 + delta)
     mix = [(mu, x1), (1.0, 1 - x1)]
     Q = list(range(2, K + 1))
@@ -102,7 +84,7 @@ def hcs_gamma(mu, delta, alpha, K, full=False):
             fj = equations(y)
             for i in range(len(x)):
                 J[i][j] = (fj[i] - f[i]) / 1e-7
-        dx = solve_linear(J, [-v for v in f])
+        dx = [float(v) for v in sp.Matrix(J).LUsolve(sp.Matrix([-v for v in f]))]
         x = [a + d for a, d in zip(x, dx)]
         if max(abs(d) for d in dx) < 1e-13:
             break
