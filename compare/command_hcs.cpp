@@ -5,7 +5,10 @@
 // species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), D_sonine2_factor = D_k[2]/D_k[1]
 // (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3) and
 // D_sonine_factors = [D_k[1]/D_k[1], …, D_k[5]/D_k[1]] (the Sonine orders 1–5, up to the first without a
-// diffusive solution; the kinetic level uses order 4), tau0 = 2/ξ
+// diffusive solution; the kinetic level uses order 4), D_converged_factor = D_k/D_k[1] of the same tracer problem
+// solved without the Sonine truncation and D_converged_change, its change from one basis function fewer
+// (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~0.02 s per species and partner),
+// tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
@@ -28,10 +31,14 @@
 #include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
 #include "theory/sonine_truncation.hpp"
+#include "theory/tracer_diffusion_galerkin.hpp"
 
 namespace granmix::compare {
 
 namespace {
+
+// The converged tracer problem costs ~0.02 s per species and partner: up to this many species (a 20-species gas, 8 s).
+constexpr std::size_t max_converged_species = 20;
 
 struct HcsOptions {
   std::vector<double> mass, diameter, density;
@@ -99,6 +106,13 @@ int run(const HcsOptions& o) {
     }
     sonine2[k] = orders[k].size() > 1 ? orders[k][1] : std::numeric_limits<double>::quiet_NaN();
   }
+  // The same problem converged (NaN: no diffusive solution).
+  std::vector<double> converged(mix.size(), std::numeric_limits<double>::quiet_NaN()), change = converged;
+  if (mix.size() <= max_converged_species)
+    for (std::size_t k = 0; k < mix.size(); ++k) {
+      converged[k] = theory::converged_tracer_diffusion(rates, k, d.T.data()).factor;
+      if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(rates, k, d.T.data());
+    }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
   const double eps_one = listed ? o.eps : o.alpha;
   std::optional<theory::SonineTruncation> trunc;
@@ -115,6 +129,7 @@ int run(const HcsOptions& o) {
       if (std::isfinite(sonine.tail_exponent(k))) s["tail_exponent"] = sonine.tail_exponent(k);
       if (std::isfinite(sonine2[k])) s["D_sonine2_factor"] = sonine2[k];
       if (!orders[k].empty()) s["D_sonine_factors"] = orders[k];
+      if (std::isfinite(converged[k])) s["D_converged_factor"] = converged[k], s["D_converged_change"] = change[k];
       if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       if (third) s["T_ratio_sonine3"] = third->T[k] / third->T[0], s["c_sonine3"] = third->c[k], s["a3_sonine3"] = third->a3[k];
       j["species"].push_back(s);

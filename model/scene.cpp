@@ -190,7 +190,8 @@ Observables read_observables(TomlFields& f) {
 
 TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   TheorySettings s;
-  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped"}, "paper");
+  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-converged", "kinetic-converged-cooling3"},
+                     "paper");
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
   // 1e-14: below it CVODE works at rounding level; 1e-3: above it no comparison means anything.
@@ -226,6 +227,15 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
+  // The converged level's velocity memory is the settled one (theory/theory_level.cpp, ConvergedLevel): it gives the
+  // settled quantities of a sweep (D ratios, from the MSD increments of a settled start), no history from a start.
+  if (s.theory.level.starts_with("kinetic-converged")) {
+    if (!s.theory.sweep)
+      top.fail("theory", "level \"" + s.theory.level + "\" gives the settled quantities of a sweep only (its velocity memory is the settled one)",
+               "theory.sweep with d_ratio, gamma or cumulant; theory.level = \"kinetic\" for histories");
+    if (s.restitution.is_viscoelastic())
+      top.fail("theory", "level \"" + s.theory.level + "\" needs a constant restitution coefficient", "collisions.restitution = number");
+  }
   if (s.theory.msd == "closed" && !settled_start)
     top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
   if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())
@@ -404,6 +414,7 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
     // The levels a correction is measured from, beside the judged one (theory/theory_level.hpp, companion_level).
     const std::string& level = s.theory.level;
     const bool cooling3 = level == "kinetic-cooling3" || level == "kinetic-cooling3-shaped";
+    const bool converged = level.starts_with("kinetic-converged");
     for (const CompareQuantity& q : s.compare)
       for (const std::string& lower : q.correction_from) {
         if (lower == "paper" && level == "paper")
@@ -412,12 +423,12 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "sonine1" && level != "kinetic" && level != "kinetic-cooling3")
           t.fail("correction_from", "\"sonine1\" is the first-Sonine D of the kinetic level, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic\" or \"kinetic-cooling3\", or correction_from = \"paper\" or \"maxwell\"");
-        if (lower == "kinetic" && !cooling3)
-          t.fail("correction_from", "\"kinetic\" is the first-Sonine temperatures under a kinetic-cooling3 level, but theory.level is \"" +
-                 level + "\"", "theory.level = \"kinetic-cooling3\", or correction_from = \"paper\"");
-        if (lower == "cooling3" && level != "paper" && level != "kinetic")
+        if (lower == "kinetic" && !cooling3 && !converged)
+          t.fail("correction_from", "\"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"" +
+                 level + "\"", "theory.level = \"kinetic-cooling3\" or \"kinetic-converged\", or correction_from = \"paper\"");
+        if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
-                 level + "\"", "theory.level = \"paper\" or \"kinetic\"");
+                 level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");
       }
   }
   if (top.has("plot")) {

@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "collision_rates.hpp"
+#include "velocity_memory.hpp"
 
 namespace granmix::theory {
 
@@ -12,6 +13,10 @@ struct SettledDiffusion {
   std::vector<double> D;        // D_k = T_k τ_v,k / m_k (v1 Eq. 19)
   std::vector<double> D_ratio;  // D_k / D_1
   double tau0 = 0.0;            // 2/ξ at ⟨T⟩ = 1 (Haff time; infinite for ε = 1)
+  // The settled velocity memory of each species (velocity_memory.hpp), where a level has more than the one
+  // exponential of (D_k, τ_v,k); empty otherwise.
+  std::vector<VelocityMemory> memory;
+  VelocityMemory memory_of(std::size_t k) const { return memory.empty() ? VelocityMemory::exponential(D[k], tau_v[k]) : memory[k]; }
 };
 
 // Everything at the given temperatures (no settling): τ_v,k, D_k.

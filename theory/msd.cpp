@@ -1,5 +1,7 @@
 #include "msd.hpp"
 
+#include "velocity_memory.hpp"
+
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 
@@ -74,10 +76,7 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
 }
 
 double msd_closed(double D0, double tau_v0, double tau0, double t) {
-  if (!std::isfinite(tau0)) return 6.0 * D0 * (t + tau_v0 * std::expm1(-t / tau_v0));  // elastic: Ornstein–Uhlenbeck
-  const double L = std::log1p(t / tau0);
-  // physics.md §3 (v2 Eq. 22); 1 − (1+t/τ₀)^(−p) written with expm1 for small t.
-  return 6.0 * D0 * (tau0 * L + tau_v0 * std::expm1(-(tau0 / tau_v0) * L));
+  return msd_increment(VelocityMemory::exponential(D0, tau_v0), tau0, 0.0, t);  // physics.md §3 (v2 Eq. 22)
 }
 
 double msd_closed_longtime(double D0, double tau0, double t) { return 6.0 * D0 * tau0 * std::log1p(t / tau0); }

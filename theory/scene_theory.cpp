@@ -201,10 +201,10 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
           case MsdMethod::eq17: x.msd.push_back(msd_eq17(h, k, t)); break;
           case MsdMethod::vacf: x.msd.push_back(h.msd_vacf(t, k)); break;
           case MsdMethod::longtime: x.msd.push_back(6.0 * h.diffusion_integral(t, k)); break;
-          case MsdMethod::closed: x.msd.push_back(msd_closed(d0.D[k], d0.tau_v[k], d0.tau0, t)); break;
+          case MsdMethod::closed: x.msd.push_back(msd_increment(d0.memory_of(k), d0.tau0, 0.0, t)); break;
         }
       }
-      if (o.tamsd) x.tamsd.push_back(tamsd(d0.D[k], d0.tau_v[k], d0.tau0, o.tamsd_measurement_time, t));
+      if (o.tamsd) x.tamsd.push_back(tamsd(d0.memory_of(k), d0.tau0, o.tamsd_measurement_time, t));
     }
     if (o.d_ratio) x.D_ratio = level.diffusion_at(rates, x.T).D_ratio;  // D_k(t)/D_1(t)
     out.push_back(std::move(x));

@@ -22,45 +22,23 @@ namespace {
 // (the factor √(2V/π) is applied per pair). Gauss–Legendre on [0, 0.9] and [0.9, 1.3] (e^(−w²⁰) < 1e-80
 // beyond 1.3 even with the u⁸ of the fourth moment); the panels split the steep fall of e^(−w²⁰) from the
 // w¹⁹ rise. 32 + 48 nodes reproduce the closed forms to ~1e-14 (tests/theory/test_sonine_quadrature.cpp).
-struct WRule {
-  std::vector<double> w10, weight;  // w¹⁰ = u/√(2V) at the nodes; weight includes 10 w¹⁹ e^(−w²⁰)
-  WRule() {
-    const double edges[] = {0.0, 0.9, 1.3};
-    const std::size_t nodes[] = {32, 48};
-    for (std::size_t p = 0; p < 2; ++p) {
-      gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(nodes[p]);
-      if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
-      for (std::size_t j = 0; j < nodes[p]; ++j) {
-        double x = 0.0, h = 0.0;
-        if (gsl_integration_glfixed_point(edges[p], edges[p + 1], j, &x, &h, t) != 0) {
-          gsl_integration_glfixed_table_free(t);
-          throw NumericalError("gsl_integration_glfixed_point failed");
-        }
-        w10.push_back(std::pow(x, 10));
-        weight.push_back(h * 10.0 * std::pow(x, 19) * std::exp(-std::pow(x, 20)));
+GaussRule make_speed_rule() {
+  GaussRule r;  // x = w¹⁰ = u/√(2V) at the nodes; weight includes 10 w¹⁹ e^(−w²⁰)
+  const double edges[] = {0.0, 0.9, 1.3};
+  const std::size_t nodes[] = {32, 48};
+  for (std::size_t p = 0; p < 2; ++p) {
+    gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(nodes[p]);
+    if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
+    for (std::size_t j = 0; j < nodes[p]; ++j) {
+      double x = 0.0, h = 0.0;
+      if (gsl_integration_glfixed_point(edges[p], edges[p + 1], j, &x, &h, t) != 0) {
+        gsl_integration_glfixed_table_free(t);
+        throw NumericalError("gsl_integration_glfixed_point failed");
       }
-      gsl_integration_glfixed_table_free(t);
+      r.x.push_back(std::pow(x, 10));
+      r.weight.push_back(h * 10.0 * std::pow(x, 19) * std::exp(-std::pow(x, 20)));
     }
-  }
-};
-
-// Gauss rules for the expectation over N(0, 1) (probabilists' Hermite) and over Exp(1) (Laguerre), n points,
-// exact to degree 2n − 1, by Golub–Welsch (the eigen-decomposition of the recurrence's Jacobi matrix).
-struct GaussRule {
-  std::vector<double> x, weight;
-};
-GaussRule golub_welsch(std::size_t n, bool laguerre) {
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
-  for (std::size_t j = 0; j < n; ++j) {
-    if (laguerre) J(Eigen::Index(j), Eigen::Index(j)) = 2.0 * double(j) + 1.0;
-    if (j + 1 < n) J(Eigen::Index(j), Eigen::Index(j + 1)) = J(Eigen::Index(j + 1), Eigen::Index(j)) = laguerre ? double(j + 1) : std::sqrt(double(j + 1));
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
-  if (es.info() != Eigen::Success) throw NumericalError("Golub–Welsch: eigen-decomposition failed");
-  GaussRule r;
-  for (std::size_t j = 0; j < n; ++j) {
-    const double v0 = es.eigenvectors()(0, Eigen::Index(j));
-    r.x.push_back(es.eigenvalues()[Eigen::Index(j)]), r.weight.push_back(v0 * v0);
+    gsl_integration_glfixed_table_free(t);
   }
   return r;
 }
@@ -78,19 +56,35 @@ const ModeRules& mode_rules() {
   return r;
 }
 
-const WRule& w_rule() {
-  static const WRule rule;
+}  // namespace
+
+GaussRule golub_welsch(std::size_t n, bool laguerre) {
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  for (std::size_t j = 0; j < n; ++j) {
+    if (laguerre) J(Eigen::Index(j), Eigen::Index(j)) = 2.0 * double(j) + 1.0;
+    if (j + 1 < n) J(Eigen::Index(j), Eigen::Index(j + 1)) = J(Eigen::Index(j + 1), Eigen::Index(j)) = laguerre ? double(j + 1) : std::sqrt(double(j + 1));
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
+  if (es.info() != Eigen::Success) throw NumericalError("Golub–Welsch: eigen-decomposition failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double v0 = es.eigenvectors()(0, Eigen::Index(j));
+    r.x.push_back(es.eigenvalues()[Eigen::Index(j)]), r.weight.push_back(v0 * v0);
+  }
+  return r;
+}
+
+const GaussRule& impact_speed_rule() {
+  static const GaussRule rule = make_speed_rule();
   return rule;
 }
 
-}  // namespace
-
-std::size_t sonine_quadrature_nodes() { return w_rule().w10.size(); }
+std::size_t sonine_quadrature_nodes() { return impact_speed_rule().x.size(); }
 
 void sonine_quadrature_speeds(double V, double* u) {
-  const WRule& rule = w_rule();
+  const GaussRule& rule = impact_speed_rule();
   const double u_scale = std::sqrt(2.0 * V);
-  for (std::size_t n = 0; n < rule.w10.size(); ++n) u[n] = u_scale * rule.w10[n];
+  for (std::size_t n = 0; n < rule.x.size(); ++n) u[n] = u_scale * rule.x[n];
 }
 
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const std::function<double(double)>& eps,
@@ -103,7 +97,7 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes) {
   if (modes < 1 || modes > max_sonine_modes) throw std::invalid_argument("sonine_pair_quadrature: modes must be 1 to 5");
-  const WRule& rule = w_rule();
+  const GaussRule& rule = impact_speed_rule();
   const GaussRule &hermite = mode_rules().hermite[modes], &laguerre = mode_rules().laguerre[modes];
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
@@ -111,8 +105,8 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
   PairSonineIntegrals out;
   out.C.modes = modes;
   std::array<double, max_sonine_modes> S{}, S1{};
-  for (std::size_t n = 0; n < rule.w10.size(); ++n) {
-    const double u = u_scale * rule.w10[n], beta = mu * (1.0 + eps_nodes[n]), bu = beta * u;
+  for (std::size_t n = 0; n < rule.x.size(); ++n) {
+    const double u = u_scale * rule.x[n], beta = mu * (1.0 + eps_nodes[n]), bu = beta * u;
     std::array<double, 3> e2{}, e4{};
     SonineCollisionIntegrals c;
     for (std::size_t h = 0; h < hermite.x.size(); ++h) {
@@ -141,15 +135,15 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 }
 
 SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
-  const WRule& rule = w_rule();
+  const GaussRule& rule = impact_speed_rule();
   const GaussRule &hermite = mode_rules().hermite[4], &laguerre = mode_rules().laguerre[4];  // 8 and 4 points
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   SonineMomentRates out{};
   constexpr std::size_t NS = sonine_moment_sources;
-  for (std::size_t n = 0; n < rule.w10.size(); ++n) {
-    const double u = u_scale * rule.w10[n], bu = mu * (1.0 + eps_nodes[n]) * u;
+  for (std::size_t n = 0; n < rule.x.size(); ++n) {
+    const double u = u_scale * rule.x[n], bu = mu * (1.0 + eps_nodes[n]) * u;
     SonineMomentRates e{};
     for (std::size_t h = 0; h < hermite.x.size(); ++h) {
       const double W = sW * hermite.x[h], zk = W + alpha * u, zk1 = zk - bu, zi = W - (1.0 - alpha) * u;

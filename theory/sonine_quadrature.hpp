@@ -17,12 +17,23 @@
 #include <array>
 #include <cstddef>
 #include <functional>
+#include <vector>
 
 #include "sonine2_diffusion.hpp"
 #include "sonine_moment_table.hpp"
 #include "sonine_terms.hpp"
 
 namespace granmix::theory {
+
+// The rules of these quadratures, shared with other pair integrals of the same form (tracer_diffusion_galerkin.cpp).
+struct GaussRule {
+  std::vector<double> x, weight;
+};
+// Expectation over N(0, 1) (laguerre = false) or Exp(1) (true), n points, exact to degree 2n − 1, by Golub–Welsch
+// (the eigen-decomposition of the recurrence's Jacobi matrix).
+GaussRule golub_welsch(std::size_t n, bool laguerre);
+// ∫₀^∞ u φ_V(u) g(u) du ≈ √(2V/π) Σ_n weight_n g(√(2V) x_n), φ_V the N(0, V) density (the rule below).
+const GaussRule& impact_speed_rule();
 
 // All per unit n_i σ_ki² χ_ki (multiply by it for the pair's rates).
 struct PairSonineIntegrals {

@@ -13,23 +13,24 @@
 namespace granmix::theory {
 
 double msd_increment(double D0, double tau_v0, double tau0, double t, double lag) {
-  if (!std::isfinite(tau0)) return 6.0 * D0 * (lag + tau_v0 * std::expm1(-lag / tau_v0));  // elastic: stationary
-  const double s = 1.0 + t / tau0;
-  const double L = std::log1p(lag / (tau0 * s));  // ln(s_Δ/s)
-  const double p = tau0 / tau_v0;
-  return 6.0 * D0 * tau0 * (L + std::expm1(-p * L) / p);
+  return msd_increment(VelocityMemory::exponential(D0, tau_v0), tau0, t, lag);
 }
 
 double tamsd(double D0, double tau_v0, double tau0, double measurement_time, double lag) {
+  return tamsd(VelocityMemory::exponential(D0, tau_v0), tau0, measurement_time, lag);
+}
+
+double tamsd(const VelocityMemory& memory, double tau0, double measurement_time, double lag) {
   if (!(lag > 0.0 && lag < measurement_time))
     throw std::invalid_argument("TAMSD: the lag must lie in (0, measurement time)");
   model::use_gsl_return_codes();
   struct Params {
-    double D0, tau_v0, tau0, lag;
-  } p{D0, tau_v0, tau0, lag};
+    const VelocityMemory& memory;
+    double tau0, lag;
+  } p{memory, tau0, lag};
   gsl_function f{[](double t, void* q) {
                    const auto* a = static_cast<const Params*>(q);
-                   return msd_increment(a->D0, a->tau_v0, a->tau0, t, a->lag);
+                   return msd_increment(a->memory, a->tau0, t, a->lag);
                  },
                  &p};
   double result = 0.0, abserr = 0.0;

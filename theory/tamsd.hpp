@@ -5,9 +5,13 @@
 //   s = 1 + t/τ₀, s_Δ = s + Δ/τ₀, p = τ₀/τ_v,k(0); the average over t by GSL QAG.
 // This is the Langevin-type model; the real TAMSD departs from it for constant ε (physics.md §4),
 // so a DSMC deviation here is a result, not a bug.
+#include "velocity_memory.hpp"
+
 namespace granmix::theory {
 
+// One exponential memory (D₀, τ_v,k(0)); the general settled memory in velocity_memory.hpp.
 double msd_increment(double D0, double tau_v0, double tau0, double t, double lag);
 double tamsd(double D0, double tau_v0, double tau0, double measurement_time, double lag);
+double tamsd(const VelocityMemory& memory, double tau0, double measurement_time, double lag);
 
 }  // namespace granmix::theory

@@ -15,6 +15,7 @@
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/sonine2_diffusion.hpp"
+#include "theory/tracer_diffusion_galerkin.hpp"
 #include "theory/sonine_hcs.hpp"
 #include "theory/sonine_second_order.hpp"
 
@@ -192,7 +193,7 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   std::vector<std::string> keys;
   for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());
   CHECK(keys == std::vector<std::string>{"T_ratio_maxwell", "T_ratio_sonine", "c", "D_ratio", "tail_exponent", "D_sonine2_factor", "D_sonine_factors",
-                                         "T_ratio_sonine3", "c_sonine3", "a3_sonine3"});
+                                         "D_converged_factor", "D_converged_change", "T_ratio_sonine3", "c_sonine3", "a3_sonine3"});
   // Sonine order 3 (the level kinetic-cooling3's HCS), computed in-process.
   const auto third = theory::sonine_hcs(mix, model::Restitution::constant(2, 0.5), model::dilute_contact_values(2), false,
                                         theory::SonineSolver::automatic, 3);
@@ -209,7 +210,13 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
     CHECK(orders[0] == 1.0);
     CHECK(orders[1] == j["species"][k]["D_sonine2_factor"].get<double>());
     for (std::size_t M = 1; M <= orders.size(); ++M) CHECK(orders[M - 1] == Approx(theory::sonine_factor(rates, k, d.T.data(), M)).epsilon(1e-14));
+    // The same problem converged (tracer_diffusion_galerkin.hpp), computed in-process: within the light species'
+    // alternating orders 4 and 5 (0.9317, 0.9366), and its truncation left far below their step.
+    CHECK(j["species"][k]["D_converged_factor"].get<double>() == Approx(theory::converged_tracer_diffusion(rates, k, d.T.data()).factor).epsilon(1e-14));
+    CHECK(j["species"][k]["D_converged_change"].get<double>() < 0.1 * std::abs(orders[4] - orders[3]));
   }
+  CHECK(j["species"][0]["D_converged_factor"].get<double>() > 0.9317);
+  CHECK(j["species"][0]["D_converged_factor"].get<double>() < 0.9366);
 }
 
 TEST_CASE("granmix hcs: D_sonine2_factor of elastic hard spheres is 59/58 (Chapman-Cowling second approximation)", "[compare]") {

@@ -2,10 +2,13 @@
 // VACF ODE, the viscoelastic t^(1/6) law, TAMSD identities and the tracer limit.
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <complex>
+#include <limits>
 #include <cstdio>
 
 #include "theory/diffusion.hpp"
 #include "theory/msd.hpp"
+#include "theory/velocity_memory.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/tamsd.hpp"
 #include "theory/tracer_limit.hpp"
@@ -125,4 +128,36 @@ TEST_CASE("tracer limit: equals the binary with a vanishing intruder density - a
     previous = rel;
   }
   CHECK(previous < 0.01);
+}
+
+TEST_CASE("velocity memory: the closed form of several modes (a complex pair too) equals the double integral of C", "[theory]") {
+  // C(s) = Σ_j a_j e^(−λ_j s) in the Haff clock s = τ₀ ln(1 + t/τ₀), velocities scaled by 1/(1 + t/τ₀):
+  // MSD(t) = 2∫₀ᵗdt₂∫₀^t₂dt₁ C(s₂ − s₁)/((1 + t₁/τ₀)(1 + t₂/τ₀)), by nested Simpson rules (error ~1e-9).
+  VelocityMemory m;
+  m.weight = {{0.6, 0.2}, {0.6, -0.2}, {0.3, 0.0}};
+  m.rate = {{2.0, 0.7}, {2.0, -0.7}, {0.5, 0.0}};
+  for (double tau0 : {3.0, std::numeric_limits<double>::infinity()}) {
+    auto C = [&](double t1, double t2) {
+      const double s = std::isfinite(tau0) ? tau0 * std::log((1 + t2 / tau0) / (1 + t1 / tau0)) : t2 - t1;
+      const double scale = std::isfinite(tau0) ? 1.0 / ((1 + t1 / tau0) * (1 + t2 / tau0)) : 1.0;
+      std::complex<double> c = 0.0;
+      for (std::size_t j = 0; j < m.weight.size(); ++j) c += m.weight[j] * std::exp(-m.rate[j] * s);
+      return scale * c.real();
+    };
+    auto simpson = [](auto f, double a, double b, int n) {
+      double h = (b - a) / n, s = f(a) + f(b);
+      for (int i = 1; i < n; ++i) s += (i % 2 ? 4.0 : 2.0) * f(a + i * h);
+      return s * h / 3.0;
+    };
+    for (double t : {0.5, 7.0}) {
+      const double direct = 2.0 * simpson([&](double t2) { return simpson([&](double t1) { return C(t1, t2); }, 0.0, t2, 400); }, 0.0, t, 400);
+      INFO("tau0 = " << tau0 << ", t = " << t);
+      CHECK(msd_increment(m, tau0, 0.0, t) == Approx(direct).epsilon(1e-7));
+    }
+    // An increment from t = 2 is the same double integral over [2, 2 + lag].
+    const double lag = 3.0;
+    const double inc = 2.0 * simpson([&](double t2) { return simpson([&](double t1) { return C(t1, t2); }, 2.0, t2, 400); }, 2.0, 2.0 + lag, 400);
+    CHECK(msd_increment(m, tau0, 2.0, lag) == Approx(inc).epsilon(1e-7));
+  }
+  CHECK(m.diffusion() == Approx((2.0 * (std::complex<double>(0.6, 0.2) / std::complex<double>(2.0, 0.7))).real() / 3.0 + 0.3 / 1.5).epsilon(1e-14));
 }

@@ -1,0 +1,207 @@
+#include "tracer_diffusion_galerkin.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <vector>
+
+#include "model/errors.hpp"
+#include "sonine_polynomials.hpp"
+#include "sonine_quadrature.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+// Gauss points in W (Hermite) and |v_⊥|² (Laguerre) given the impact speed, and for the averages over f_w and f_k:
+// the Sonine basis (degree ≤ 2·5 in each) is integrated exactly; the weighted basis's near-singular 1/√(c² + x₀)
+// to 2e-4 of the factor (see the header).
+constexpr std::size_t hermite_points = 60, laguerre_points = 36;
+
+struct Rules {
+  GaussRule hermite = golub_welsch(hermite_points, false), laguerre = golub_welsch(laguerre_points, true);
+};
+const Rules& rules() {
+  static const Rules r;
+  return r;
+}
+
+constexpr std::size_t max_basis = 16;
+
+// x dL_m/dx = m L_m − (m + 3/2) L_{m−1} (associated Laguerre, α = 3/2).
+double x_derivative(std::size_t m, const double* L) { return m == 0 ? 0.0 : double(m) * L[m] - (double(m) + 1.5) * L[m - 1]; }
+
+}  // namespace
+
+RadialBasis sonine_radial_basis(std::size_t modes) {
+  if (modes < 1 || modes > max_basis) throw std::invalid_argument("sonine_radial_basis: 1 to 16 functions");
+  return {modes, [modes](double x, double* B, double* xdB) {
+            sonine_vector_basis(x, modes, B);
+            for (std::size_t m = 0; m < modes; ++m) xdB[m] = x_derivative(m, B);
+          }};
+}
+
+RadialBasis collision_weighted_basis(std::size_t size, double x0) {
+  if (size < 2 || size > max_basis) throw std::invalid_argument("collision_weighted_basis: 2 to 16 functions");
+  if (!(x0 >= 0.0 && std::isfinite(x0))) throw std::invalid_argument("collision_weighted_basis: x0 must be finite and >= 0");
+  return {size, [size, x0](double x, double* B, double* xdB) {
+            double L[max_basis];
+            sonine_vector_basis(x, size - 1, L);
+            const double r = 1.0 / std::sqrt(x + x0), h = -0.5 * x / (x + x0);  // x d ln(x + x₀)^(−1/2)/dx
+            B[0] = 1.0, xdB[0] = 0.0;
+            for (std::size_t m = 1; m < size; ++m) B[m] = L[m - 1] * r, xdB[m] = (x_derivative(m - 1, L) + h * L[m - 1]) * r;
+          }};
+}
+
+TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const double* T, const RadialBasis& basis, const GalerkinOptions& opt) {
+  const model::Mixture& mix = rates.mixture();
+  const std::size_t N = basis.size;
+  const Rules& g = rules();
+  const GaussRule& speed = impact_speed_rule();
+  const double lam = opt.weight_temperature;
+  if (!(lam > 0.0 && std::isfinite(lam))) throw std::invalid_argument("tracer_galerkin: the weight temperature must be positive");
+  TracerGalerkin out;
+  const double theta_k = T[k] / mix[k].mass, theta_w = lam * theta_k, inv2k = 0.5 / theta_k;
+  out.theta = theta_k;
+  out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
+  out.M = out.A;
+  out.r = Eigen::VectorXd::Zero(Eigen::Index(N));
+  std::vector<double> B(N), dB(N), B1(N), dB1(N);
+  // Collisions with every partner i: the f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp),
+  // the partner's shape as E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
+  for (std::size_t i = 0; i < mix.size(); ++i) {
+    const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
+    if (weight == 0.0) continue;
+    const double theta_i = T[i] / mix[i].mass, mu = mix[i].mass / (mix[i].mass + mix[k].mass);
+    const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);
+    const double ai2 = opt.a2 ? opt.a2[i] : 0.0, ai3 = opt.a3 ? opt.a3[i] : 0.0, inv2i = 0.5 / theta_i;
+    const double flux = weight * 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
+    for (std::size_t n = 0; n < speed.x.size(); ++n) {
+      const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
+      const double wn = flux * speed.weight[n];
+      for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
+        const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
+        double shape = 1.0;
+        if (ai2 != 0.0 || ai3 != 0.0) {
+          const double y = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
+          shape += ai2 * sonine_axial_S2(y) + ai3 * sonine_axial_S3(y);
+        }
+        for (std::size_t l = 0; l < g.laguerre.x.size(); ++l) {
+          const double w = wn * shape * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
+          const double x = r + zk * zk * inv2k, x1 = r + zk1 * zk1 * inv2k, cc = r + zk * zk1 * inv2k;  // c², c′², c·c′
+          basis.eval(x, B.data(), dB.data()), basis.eval(x1, B1.data(), dB1.data());
+          for (std::size_t m = 0; m < N; ++m) {
+            const double loss = w * (x * B[m] - cc * B1[m]);  // c·[c B_m(c²) − c′ B_m(c′²)]
+            for (std::size_t q = 0; q < N; ++q) out.A(Eigen::Index(q), Eigen::Index(m)) += B[q] * loss;
+          }
+        }
+      }
+    }
+  }
+  // Averages over f_w (the mass matrix, the scaling term) and f_k (r): c_z = z√(λ/2) resp. z/√2, z ~ N(0, 1),
+  // |c_⊥|² = λ·Exp(1) resp. Exp(1).
+  const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;
+  const double own2 = opt.a2 ? opt.a2[k] : 0.0, own3 = opt.a3 ? opt.a3[k] : 0.0;
+  for (std::size_t h = 0; h < g.hermite.x.size(); ++h)
+    for (std::size_t l = 0; l < g.laguerre.x.size(); ++l) {
+      const double w = g.hermite.weight[h] * g.laguerre.weight[l], x = 0.5 * g.hermite.x[h] * g.hermite.x[h] + g.laguerre.x[l];
+      basis.eval(x, B.data(), dB.data());
+      const double shape = 1.0 + own2 * sonine_S2(x) + own3 * sonine_S3(x);
+      for (std::size_t q = 0; q < N; ++q) out.r[Eigen::Index(q)] += w * shape * x * B[q];
+      const double xw = lam * x;
+      basis.eval(xw, B.data(), dB.data());
+      for (std::size_t q = 0; q < N; ++q)
+        for (std::size_t m = 0; m < N; ++m) {
+          out.M(Eigen::Index(q), Eigen::Index(m)) += w * xw * B[q] * B[m];
+          out.A(Eigen::Index(q), Eigen::Index(m)) -= 0.5 * zeta * w * xw * B[q] * (B[m] + 2.0 * dB[m]);
+        }
+    }
+  return out;
+}
+
+namespace {
+
+// The problem in an M-orthonormal basis of the span: the weighted functions come close to the constant B₀ where the
+// partners are fast (x₀ ≫ 1, a heavy tracer), so directions with an M-eigenvalue below 1e-11 of the largest are
+// dropped (Φ = Q Λ^(−1/2) over the kept ones). Then ẏ = −K y, K = ΦᵀAΦ, y(0) = ΦᵀM e₀ (the M-projection of
+// d(0) = e₀, exact where e₀ lies in the kept span), C(s) = 2θ (Φᵀr)·y(s).
+struct Reduced {
+  Eigen::MatrixXd K;
+  Eigen::VectorXd y0, r;
+};
+Reduced reduce(const TracerGalerkin& g) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(g.M);
+  if (es.info() != Eigen::Success) throw NumericalError("tracer diffusion Galerkin: the mass matrix (Eigen SelfAdjointEigenSolver) failed");
+  const Eigen::VectorXd mu = es.eigenvalues();
+  const double floor = 1e-11 * mu.maxCoeff();
+  std::vector<Eigen::Index> kept;
+  for (Eigen::Index j = 0; j < mu.size(); ++j)
+    if (mu[j] > floor) kept.push_back(j);
+  Eigen::MatrixXd Phi(g.M.rows(), Eigen::Index(kept.size()));
+  for (std::size_t j = 0; j < kept.size(); ++j) Phi.col(Eigen::Index(j)) = es.eigenvectors().col(kept[j]) / std::sqrt(mu[kept[j]]);
+  return {Phi.transpose() * g.A * Phi, Phi.transpose() * g.M.col(0), Phi.transpose() * g.r};
+}
+
+}  // namespace
+
+double galerkin_diffusion(const TracerGalerkin& g) {
+  const Reduced p = reduce(g);
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(p.K);
+  if (!lu.isInvertible()) return std::numeric_limits<double>::quiet_NaN();
+  const double D = 2.0 * g.theta / 3.0 * p.r.dot(lu.solve(p.y0));  // (1/3)∫₀^∞ C ds
+  return std::isfinite(D) && D > 0.0 ? D : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::optional<VelocityMemory> galerkin_memory(const TracerGalerkin& g) {
+  // K = V Λ V⁻¹: C(s) = Σ_j 2θ (rᵀV)_j (V⁻¹y₀)_j e^(−λ_j s).
+  const Reduced p = reduce(g);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(p.K);
+  if (es.info() != Eigen::Success) throw NumericalError("tracer diffusion Galerkin: eigen-decomposition failed (Eigen EigenSolver)");
+  const Eigen::MatrixXcd V = es.eigenvectors();
+  const Eigen::VectorXcd left = V.transpose() * p.r.cast<std::complex<double>>();
+  const Eigen::VectorXcd right = V.fullPivLu().solve(p.y0.cast<std::complex<double>>());
+  VelocityMemory m;
+  for (Eigen::Index j = 0; j < V.cols(); ++j) {
+    const std::complex<double> rate = es.eigenvalues()[j];
+    if (!(rate.real() > 0.0)) return std::nullopt;  // a mode that does not decay: no diffusive solution
+    m.weight.push_back(2.0 * g.theta * left[j] * right[j]), m.rate.push_back(rate);
+  }
+  return m;
+}
+
+namespace {
+
+// x₀ of collision_weighted_basis for species k (see the header).
+double basis_x0(const CollisionRates& rates, std::size_t k, const double* T) {
+  const model::Mixture& mix = rates.mixture();
+  double sum = 0.0, mean_speed = 0.0;  // the partners' mean speed √(8θ_i/π), weighted with n_i σ_ki² χ_ki
+  for (std::size_t i = 0; i < mix.size(); ++i) {
+    const double s = mix.sigma(k, i), w = mix[i].density * s * s * rates.chi(k, i);
+    sum += w, mean_speed += w * std::sqrt(8.0 * T[i] / (std::numbers::pi * mix[i].mass));
+  }
+  return std::pow(mean_speed / sum, 2) * mix[k].mass / (2.0 * T[k]);
+}
+
+}  // namespace
+
+ConvergedDiffusion converged_tracer_diffusion(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt,
+                                              std::size_t size) {
+  const double D1 = T[k] / (rates.mixture()[k].mass * rates.inv_tau_v_species(k, T));
+  ConvergedDiffusion out;
+  out.problem = tracer_galerkin(rates, k, T, collision_weighted_basis(size, basis_x0(rates, k, T)), opt);
+  out.D = galerkin_diffusion(out.problem);
+  out.factor = out.D / D1;
+  return out;
+}
+
+double converged_diffusion_change(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt, std::size_t size) {
+  if (size < 3) throw std::invalid_argument("converged_diffusion_change: size must be >= 3");
+  const double x0 = basis_x0(rates, k, T);
+  const double a = galerkin_diffusion(tracer_galerkin(rates, k, T, collision_weighted_basis(size, x0), opt));
+  const double b = galerkin_diffusion(tracer_galerkin(rates, k, T, collision_weighted_basis(size - 1, x0), opt));
+  return std::abs(a - b) / a;
+}
+
+}  // namespace granmix::theory
