@@ -79,6 +79,65 @@ const GaussRule& impact_speed_rule() {
   return rule;
 }
 
+namespace {
+
+// The Gauss rule of the weight x e^(−x²) on [0, ∞) (u = √(2V) x): its recurrence by the Stieltjes procedure on a
+// discretisation of the weight (Gauss–Legendre, 400 points on [0, 10], where the weight is below 1e-42 beyond), then
+// Golub–Welsch. Exact to degree 2n − 1 up to that discretisation (~1e-15).
+GaussRule make_half_range_rule(std::size_t n) {
+  constexpr std::size_t fine = 400;
+  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(fine);
+  if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
+  std::vector<double> x(fine), w(fine);
+  for (std::size_t j = 0; j < fine; ++j) {
+    double h = 0.0;
+    if (gsl_integration_glfixed_point(0.0, 10.0, j, &x[j], &h, t) != 0) {
+      gsl_integration_glfixed_table_free(t);
+      throw NumericalError("gsl_integration_glfixed_point failed");
+    }
+    w[j] = h * x[j] * std::exp(-x[j] * x[j]);
+  }
+  gsl_integration_glfixed_table_free(t);
+  // Stieltjes: p_{k+1} = (x − α_k) p_k − β_k p_{k−1}, on the discrete measure.
+  std::vector<double> alpha(n), beta(n), p(fine, 1.0), q(fine, 0.0);
+  double norm = 0.0;
+  for (std::size_t j = 0; j < fine; ++j) norm += w[j];
+  const double mass = norm;
+  for (std::size_t k = 0; k < n; ++k) {
+    double a = 0.0;
+    for (std::size_t j = 0; j < fine; ++j) a += w[j] * x[j] * p[j] * p[j];
+    alpha[k] = a / norm;
+    for (std::size_t j = 0; j < fine; ++j) {
+      const double next = (x[j] - alpha[k]) * p[j] - (k ? beta[k] : 0.0) * q[j];
+      q[j] = p[j], p[j] = next;
+    }
+    double next_norm = 0.0;
+    for (std::size_t j = 0; j < fine; ++j) next_norm += w[j] * p[j] * p[j];
+    if (k + 1 < n) beta[k + 1] = next_norm / norm;
+    norm = next_norm;
+  }
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(Eigen::Index(n), Eigen::Index(n));
+  for (std::size_t k = 0; k < n; ++k) {
+    J(Eigen::Index(k), Eigen::Index(k)) = alpha[k];
+    if (k + 1 < n) J(Eigen::Index(k), Eigen::Index(k + 1)) = J(Eigen::Index(k + 1), Eigen::Index(k)) = std::sqrt(beta[k + 1]);
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(J);
+  if (es.info() != Eigen::Success) throw NumericalError("half-range Gauss rule: eigen-decomposition failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double v0 = es.eigenvectors()(0, Eigen::Index(j));
+    r.x.push_back(es.eigenvalues()[Eigen::Index(j)]), r.weight.push_back(mass * v0 * v0);
+  }
+  return r;
+}
+
+}  // namespace
+
+const GaussRule& constant_eps_speed_rule() {
+  static const GaussRule rule = make_half_range_rule(24);
+  return rule;
+}
+
 std::size_t sonine_quadrature_nodes() { return impact_speed_rule().x.size(); }
 
 void sonine_quadrature_speeds(double V, double* u) {

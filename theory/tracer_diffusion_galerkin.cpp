@@ -17,7 +17,7 @@ namespace {
 
 // Gauss points in W (Hermite) and |v_⊥|² (Laguerre) given the impact speed, and for the averages over f_w and f_k:
 // the Sonine basis (degree ≤ 2·5 in each) is integrated exactly; the weighted basis's near-singular 1/√(c² + x₀)
-// to 2e-4 of the factor (see the header).
+// to 5e-4 of the factor (see the header).
 constexpr std::size_t hermite_points = 60, laguerre_points = 36;
 
 struct Rules {
@@ -59,7 +59,7 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
   const model::Mixture& mix = rates.mixture();
   const std::size_t N = basis.size;
   const Rules& g = rules();
-  const GaussRule& speed = impact_speed_rule();
+  const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule() : constant_eps_speed_rule();
   const double lam = opt.weight_temperature;
   if (!(lam > 0.0 && std::isfinite(lam))) throw std::invalid_argument("tracer_galerkin: the weight temperature must be positive");
   TracerGalerkin out;

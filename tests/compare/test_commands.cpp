@@ -135,20 +135,20 @@ struct BinaryByHand {
 TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent transcription of the rates", "[compare]") {
   const Tsv t = theory_of("bo1-fig05");
   CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_paper", "D_ratio_increment_paper",
-                                              "D_ratio_sonine1", "D_ratio_increment_sonine1"});
+                                              "D_ratio_kinetic", "D_ratio_increment_kinetic", "D_ratio_cooling3", "D_ratio_increment_cooling3"});
   REQUIRE(t.rows.size() == 102);
-  // The sonine1 column differs from the kinetic one by exactly the factors D_k[M]/D_k[1] (M = 4) of the settled
-  // first-Sonine HCS (physics-beyond §3): D₂/D₁ = (f₂/f₁) × its first-Sonine value, f₂/f₁ 0.96–1.14 here.
+  // The judged kinetic-converged column beside its kinetic companion: where the Sonine sequence of D converges
+  // (ε = 0.5, 0.8) they differ by the species' shape in D only (< 1.5%); at ε = 0.2, where it does not, by more
+  // (tests/theory/test_tracer_diffusion_galerkin.cpp). From the level's own settled start at constant ε its MSD
+  // increments give the settled ratio within 0.5%.
   for (const double e : {0.2, 0.5, 0.8}) {
     const std::size_t row = 2 * std::size_t(std::lround(e * 50)) + 1;  // species 2 of sweep point e (51 points)
     REQUIRE(t.at(row, "eps") == Approx(e));
-    const model::Mixture mix({{1, 1, 0.1}, {100, std::cbrt(100.0), 0.1}});
-    const theory::CollisionRates rates(mix, model::Restitution::constant(2, e), model::dilute_contact_values(2));
-    const std::vector<double> T = theory::sonine_hcs(mix, model::Restitution::constant(2, e), model::dilute_contact_values(2)).T;
-    const std::size_t M = theory::kinetic_sonine_order;
-    const double f = theory::sonine_factor(rates, 1, T.data(), M) / theory::sonine_factor(rates, 0, T.data(), M);
-    CHECK(t.at(row, "D_ratio") / t.at(row, "D_ratio_sonine1") == Approx(f).epsilon(1e-10));
-    CHECK(std::abs(f - 1) > 0.02);
+    const double change = t.at(row, "D_ratio") / t.at(row, "D_ratio_kinetic") - 1;
+    INFO("eps = " << e << ": converged/kinetic - 1 = " << change);
+    if (e > 0.3) CHECK(std::abs(change) < 0.015);
+    if (e < 0.3) CHECK(change < -0.015);
+    CHECK(t.at(row, "D_ratio_increment") == Approx(t.at(row, "D_ratio")).epsilon(5e-3));
   }
   for (std::size_t row = 1; row < t.rows.size(); row += 10) {
     const double e = t.at(row, "eps");

@@ -274,3 +274,15 @@ TEST_CASE("Sonine quadrature: the kinetic level gives a viscoelastic scene the S
   CHECK(factor > 1.01);
   CHECK(nu[0] == Approx(0.5 * xi[0] + inv_tau / factor).epsilon(1e-9));
 }
+
+TEST_CASE("quadrature: the half-range Gauss rule of x e^(-x^2) integrates x^j exactly to degree 47", "[theory]") {
+  // ∫₀^∞ x^j · x e^(−x²) dx = Γ(j/2 + 1)/2; a node or weight off by 1e-12 shows at the high degrees.
+  const GaussRule& r = constant_eps_speed_rule();
+  REQUIRE(r.x.size() == 24);
+  for (int j = 0; j <= 47; ++j) {
+    double s = 0.0;
+    for (std::size_t n = 0; n < r.x.size(); ++n) s += r.weight[n] * std::pow(r.x[n], j);
+    INFO("degree " << j);
+    CHECK(s == Approx(0.5 * std::tgamma(0.5 * j + 1.0)).epsilon(1e-11));
+  }
+}

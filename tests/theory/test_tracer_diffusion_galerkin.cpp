@@ -56,8 +56,8 @@ TEST_CASE("tracer Galerkin: the Sonine basis under the Maxwellian weight is D[M]
 TEST_CASE("tracer Galerkin: elastic Lorentz gas, D/D[1] = 32/(9 pi) where the Sonine sequence is still 0.9% short", "[theory]") {
   // A light tracer (n = 1e-9) among scatterers 1e6 times heavier at equal temperature, elastic: the exact
   // Boltzmann–Lorentz value 32/(9π) = 1.13177. D[5]/D[1] = 1.1215. The converged basis holds the exact memory 1/c
-  // (x₀ → 0); what is left is the quadrature of that near-singular function, 2.5e-3 here (80 × 48 Gauss points:
-  // 1.2e-3), a third of the Sonine sequence's shortfall.
+  // (x₀ → 0); what is left is the quadrature of that near-singular function, 2.2e-3 here (80 × 48 Gauss points:
+  // 1.2e-3), a quarter of the Sonine sequence's shortfall.
   const CollisionRates r = test::constant_rates({{1, 1, 1e-9}, {1e6, 1, 0.1}}, 1.0);
   const std::vector<double> T = {1.0, 1.0};
   const double exact = 32.0 / (9.0 * std::numbers::pi), f = converged_tracer_diffusion(r, 0, T.data()).factor;
