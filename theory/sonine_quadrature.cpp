@@ -82,10 +82,10 @@ const GaussRule& impact_speed_rule() {
 namespace {
 
 // The Gauss rule of the weight x e^(−x²) on [0, ∞) (u = √(2V) x): its recurrence by the Stieltjes procedure on a
-// discretisation of the weight (Gauss–Legendre, 400 points on [0, 10], where the weight is below 1e-42 beyond), then
+// discretisation of the weight (Gauss–Legendre, 512 points on [0, 10], where the weight is below 1e-42 beyond), then
 // Golub–Welsch. Exact to degree 2n − 1 up to that discretisation (~1e-15).
 GaussRule make_half_range_rule(std::size_t n) {
-  constexpr std::size_t fine = 400;
+  constexpr std::size_t fine = 512;  // a tabulated GSL order (its computed orders lose ~1e-10)
   gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(fine);
   if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
   std::vector<double> x(fine), w(fine);
