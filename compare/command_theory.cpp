@@ -1,6 +1,6 @@
 // granmix theory SCENE.toml [--out DIR]  ->  DIR/<scene>/theory.tsv (design.md §3–4).
 // --level NAME: one theory level's curves alone (any level theory_level.hpp names, e.g. kinetic-sonine3 or
-// kinetic-cooling3-shaped, also those a scene may not judge) -> DIR/<scene>/theory_<NAME>.tsv, to compute a
+// kinetic-cooling3-shaped, kinetic-converged, also those a scene may not judge) -> DIR/<scene>/theory_<NAME>.tsv, to compute a
 // model error from any next order by hand (README, "How far the computed bounds can be tightened").
 #include <cstdio>
 #include <filesystem>

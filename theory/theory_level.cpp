@@ -171,7 +171,8 @@ class ConvergedLevel final : public TheoryLevel {
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override { base_.configure(opt, rates); }
   // At settled temperature ratios (T sets the scale): the level's steady shape and cooling rates at T.
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
-    if (rates.law().is_viscoelastic()) throw std::invalid_argument("the kinetic-converged level needs a constant restitution coefficient");
+    if (rates.law().is_viscoelastic())
+      throw InputError("level " + name_ + ": needs a constant restitution coefficient (its memory is the settled one; allowed: collisions.restitution = number)");
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;
@@ -218,9 +219,10 @@ class ConvergedLevel final : public TheoryLevel {
   // A settled start is the level's own settled state, where its memory holds (DSMC starts from the Maxwellian
   // settled ratios and relaxes to its HCS within a few collisions: before the first sample of a sweep's increments).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
-                                           TemperatureOptions& opt) const override {
-    if (init.kind == model::InitialState::Kind::hcs) return settled_temperatures(rates);
-    return base_.initial_temperatures(init, rates, opt);
+                                           TemperatureOptions&) const override {
+    if (init.kind != model::InitialState::Kind::hcs)
+      throw InputError("level " + name_ + ": holds for a settled start only (allowed: initial.temperatures = \"hcs\", or a sweep)");
+    return settled_temperatures(rates);
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;
