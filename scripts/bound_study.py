@@ -49,7 +49,7 @@ with tempfile.TemporaryDirectory() as tmp:
         level = scene.get("theory", {}).get("level", "paper")
         quantities = [q for q in scene.get("compare", {}).get("quantities", []) if q["name"] in d_dependent]
         # The levels whose D has a Sonine order (kinetic-converged solves it without one: its sweeps are left out).
-        if level not in ("kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped") or not quantities:
+        if level not in ("kinetic", "kinetic-cooling3") or not quantities:
             continue
         if any(q.get("z", 4) != 4 for q in quantities):
             sys.exit("%s: a D-dependent quantity with z != 4 (the script assumes 4)" % file)
