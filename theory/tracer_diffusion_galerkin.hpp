@@ -3,10 +3,10 @@
 // of sonine2_diffusion.hpp — partners at the temperatures T, optionally with their Sonine shape a₂, a₃, in a gas
 // cooling at ζ — solved in a radial basis that holds its solution's shape, with a test weight under which the
 // expansion converges also at strong dissipation, where the Sonine sequence D[M] does not (bo1-fig05 at ε = 0.2,
-// light species: D[M]/D[1] = 0.820, 0.923, 0.825, 0.945 for M = 2…5; here 0.8745 ± 0.0003 for 6–10 functions).
+// light species: D[M]/D[1] = 0.820, 0.923, 0.825, 0.945 for M = 2…5; here 0.8741, 6–9 functions within 1e-3).
 //
-// Adjoint form (the generator of the tagged velocity in units scaled with the cooling gas, as the Monte Carlo of
-// tests/theory/tagged_particle_mc.hpp): the velocity correlation is C(s) = ⟨v·φ(s)⟩_k with ∂_s φ = L†φ + (ζ/2)v·∇_v φ,
+// Adjoint form (the generator of the tagged velocity in units scaled with the cooling gas, as the tagged-particle
+// Monte Carlo of tests/theory/test_sonine2_diffusion.cpp): the velocity correlation is C(s) = ⟨v·φ(s)⟩_k with ∂_s φ = L†φ + (ζ/2)v·∇_v φ,
 // φ(0) = v, and D = (1/3)∫₀^∞ C ds, where
 //   L†φ(v) = Σ_i n_i σ_ki² χ_ki ∫dw f_i(w) ∫dσ̂ (g·σ̂)⁺ [φ(v′) − φ(v)],  v′ = v − μ_ik(1 + ε_ki)(g·σ̂)σ̂.
 // Petrov–Galerkin in φ = √(2θ_k) c Σ_m d_m B_m(c²), c = v/√(2θ_k), θ_k = T_k/m_k, tested with c B_n over a
@@ -16,9 +16,9 @@
 // With B_0 = 1 the vector c is in the basis, d(0) = e₀ and C(0) = 3θ_k exactly (the ballistic start).
 // Why λ = 2: the scaling term is anti-coercive under a Maxwellian weight of temperature λT_k, −(ζ/2λ)c²φ², and the
 // collisions damp only ∝ c; under λ = 1 (the Sonine problem's weight) the expansion diverges once the basis
-// resolves c ~ λ·2ν′/ζ (bo1-fig05 at ε ≤ 0.2: the factor runs 0.87, 0.88, 0.86, 0.91, 0.79, 1.09 for 5–10
-// functions); λ = 2 converges there and agrees with λ = 1 where both converge (tests).
-// With B = L_m^(3/2) and λ = 1 this is D_k[M] of sonine2_diffusion.hpp exactly (tested to 1e-10). The basis used
+// resolves c ~ λ·2ν′/ζ (bo1-fig05 at ε = 0.2, light species: 0.878, 0.870, 0.879, 0.867, 0.886, 0.849, 0.932,
+// 0.722 for 3–10 functions); λ = 2 converges there and agrees with λ = 1 where both converge (tests).
+// With B = L_m^(3/2) and λ = 1 this is D_k[M] of sonine2_diffusion.hpp exactly (tested to 1e-9). The basis used
 // here is B_0 = 1, B_m = L_{m−1}^(3/2)(c²)/√(c² + x₀): with x₀ = 0 the Lorentz gas's exact memory 1/ν(c) ∝ 1/c is
 // B_1, and x₀ = v₀²/(2θ_k), v₀ = Σ_i w_i √(8θ_i/π) / Σ_i w_i (the partners' mean speed, weighted as their
 // collision rates) keeps ν(c) finite at c = 0 as moving partners do. The pair integrals are those of
