@@ -97,6 +97,11 @@ TEST_CASE("granmix theory --level: one level alone equals the scene run's compan
   CHECK(bad.output.find("--level") != std::string::npos);
   CHECK(bad.output.find("allowed") != std::string::npos);
   CHECK(!std::filesystem::exists(d / "bo1-fig02" / "theory_kinetic-sonine9.tsv"));
+  // The converged level holds at settled states only: bo1-fig02 starts at equal temperatures.
+  const auto unsettled = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic-converged --out " + d.string());
+  CHECK(unsettled.code == 2);
+  CHECK(unsettled.output.find("level kinetic-converged: holds for a settled start only") != std::string::npos);
+  CHECK(!std::filesystem::exists(d / "bo1-fig02" / "theory_kinetic-converged.tsv"));
 }
 
 namespace {
