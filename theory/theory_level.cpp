@@ -1,6 +1,7 @@
 #include "theory_level.hpp"
 
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -197,19 +198,33 @@ class ConvergedLevel final : public TheoryLevel {
     } else {
       rates.xi_all(T.data(), xi.data());  // elastic (Maxwellian equilibrium) or too many species: Maxwellian
     }
+    // The species' problems are independent (~0.1 s each at the 51 points of a sweep): solved on OpenMP threads,
+    // each wholly on one, so the numbers do not depend on the thread count.
+    std::vector<double> Dk(N);
+    std::vector<std::optional<VelocityMemory>> memory(N);
+    std::vector<std::exception_ptr> failed(N);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::size_t k = 0; k < N; ++k) {
+      try {
+        GalerkinOptions opt;
+        opt.zeta = xi[k], opt.a2 = a2.data(), opt.a3 = a3.data();
+        const ConvergedDiffusion c = converged_tracer_diffusion(rates, k, T.data(), opt);
+        Dk[k] = c.D;
+        if (std::isfinite(c.D)) memory[k] = galerkin_memory(c.problem);
+      } catch (...) {
+        failed[k] = std::current_exception();
+      }
+    }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
     SettledDiffusion d;
     d.T = T;
     for (std::size_t k = 0; k < N; ++k) {
-      GalerkinOptions opt;
-      opt.zeta = xi[k], opt.a2 = a2.data(), opt.a3 = a3.data();
-      const ConvergedDiffusion c = converged_tracer_diffusion(rates, k, T.data(), opt);
-      std::optional<VelocityMemory> memory;
-      if (std::isfinite(c.D)) memory = galerkin_memory(c.problem);
       // No diffusive solution (a rare grain at the Santos–Dufty edge, where the first-Sonine HCS itself runs away):
       // the first-Sonine D and its one exponential, as the kinetic level does.
-      const double D = memory ? c.D : T[k] / (rates.mixture()[k].mass * rates.inv_tau_v_species(k, T.data()));
+      const double D = memory[k] ? Dk[k] : T[k] / (rates.mixture()[k].mass * rates.inv_tau_v_species(k, T.data()));
       d.D.push_back(D), d.tau_v.push_back(D * rates.mixture()[k].mass / T[k]);
-      d.memory.push_back(memory ? *memory : VelocityMemory::exponential(D, d.tau_v.back()));
+      d.memory.push_back(memory[k] ? *memory[k] : VelocityMemory::exponential(D, d.tau_v.back()));
     }
     for (std::size_t k = 0; k < N; ++k) d.D_ratio.push_back(d.D[k] / d.D[0]);
     d.tau0 = xi[0] > 0.0 ? 2.0 / xi[0] : std::numeric_limits<double>::infinity();

@@ -30,28 +30,60 @@ const Rules& rules() {
 
 constexpr std::size_t max_basis = 16;
 
-// x dL_m/dx = m L_m − (m + 3/2) L_{m−1} (associated Laguerre, α = 3/2).
-double x_derivative(std::size_t m, const double* L) { return m == 0 ? 0.0 : double(m) * L[m] - (double(m) + 1.5) * L[m - 1]; }
+// Rows L[m·count + p] = L_m^(3/2)(x_p), m < modes: the recurrence of sonine_vector_basis run over all points at once
+// (independent points in the inner loop, so it pipelines and vectorises).
+void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L) {
+  for (std::size_t p = 0; p < count; ++p) L[p] = 1.0;
+  if (modes > 1)
+    for (std::size_t p = 0; p < count; ++p) L[count + p] = 2.5 - x[p];
+  for (std::size_t n = 1; n + 1 < modes; ++n) {
+    const double a = 2.0 * double(n) + 2.5, b = double(n) + 1.5, inv = 1.0 / double(n + 1);
+    const double *Ln = L + n * count, *Lm = L + (n - 1) * count;
+    double* Lp = L + (n + 1) * count;
+    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p]) * Ln[p] - b * Lm[p]) * inv;
+  }
+}
+
+// Row m of x dL_m/dx = m L_m − (m + 3/2) L_{m−1} (associated Laguerre, α = 3/2), plus h_p L_m(x_p) (h null: 0).
+void x_derivative_row(const double* L, std::size_t count, std::size_t m, const double* h, double* out) {
+  const double* Lm = L + m * count;
+  if (m == 0) {
+    for (std::size_t p = 0; p < count; ++p) out[p] = h ? h[p] : 0.0;
+    return;
+  }
+  const double* Lm1 = L + (m - 1) * count;
+  for (std::size_t p = 0; p < count; ++p) out[p] = double(m) * Lm[p] - (double(m) + 1.5) * Lm1[p] + (h ? h[p] * Lm[p] : 0.0);
+}
 
 }  // namespace
 
 RadialBasis sonine_radial_basis(std::size_t modes) {
   if (modes < 1 || modes > max_basis) throw std::invalid_argument("sonine_radial_basis: 1 to 16 functions");
-  return {modes, [modes](double x, double* B, double* xdB) {
-            sonine_vector_basis(x, modes, B);
-            for (std::size_t m = 0; m < modes; ++m) xdB[m] = x_derivative(m, B);
+  return {modes, [modes](const double* x, std::size_t count, double* B, double* xdB) {
+            laguerre_rows(x, count, modes, B);
+            if (xdB)
+              for (std::size_t m = 0; m < modes; ++m) x_derivative_row(B, count, m, nullptr, xdB + m * count);
           }};
 }
 
 RadialBasis collision_weighted_basis(std::size_t size, double x0) {
   if (size < 2 || size > max_basis) throw std::invalid_argument("collision_weighted_basis: 2 to 16 functions");
   if (!(x0 >= 0.0 && std::isfinite(x0))) throw std::invalid_argument("collision_weighted_basis: x0 must be finite and >= 0");
-  return {size, [size, x0](double x, double* B, double* xdB) {
-            double L[max_basis];
-            sonine_vector_basis(x, size - 1, L);
-            const double r = 1.0 / std::sqrt(x + x0), h = -0.5 * x / (x + x0);  // x d ln(x + x₀)^(−1/2)/dx
-            B[0] = 1.0, xdB[0] = 0.0;
-            for (std::size_t m = 1; m < size; ++m) B[m] = L[m - 1] * r, xdB[m] = (x_derivative(m - 1, L) + h * L[m - 1]) * r;
+  return {size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
+            for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
+            double* L = B + count;  // rows 1…: L_{m−1}, then scaled by r = (x + x₀)^(−1/2)
+            laguerre_rows(x, count, size - 1, L);
+            thread_local std::vector<double> r, h;  // reused: fresh ones cost page faults at every call
+            r.resize(count), h.resize(count);
+            for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0), h[p] = -0.5 * x[p] / (x[p] + x0);  // h = x d ln r/dx
+            if (xdB) {
+              for (std::size_t p = 0; p < count; ++p) xdB[p] = 0.0;
+              for (std::size_t m = 1; m < size; ++m) x_derivative_row(L, count, m - 1, h.data(), xdB + m * count);
+              for (std::size_t m = 1; m < size; ++m)
+                for (std::size_t p = 0; p < count; ++p) xdB[m * count + p] *= r[p];
+            }
+            for (std::size_t m = 1; m < size; ++m)
+              for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
           }};
 }
 
@@ -68,7 +100,15 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
   out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
   out.M = out.A;
   out.r = Eigen::VectorXd::Zero(Eigen::Index(N));
-  std::vector<double> B(N), dB(N), B1(N), dB1(N);
+  // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
+  // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
+  const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
+  const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
+  thread_local Rows B, B1, dB, loss;  // reused across calls (fresh ones cost page faults)
+  thread_local Eigen::VectorXd x, x1, wx, wcc, xw, wr, wm;
+  for (Rows* m : {&B, &B1, &dB, &loss}) m->resize(n_rows, n_cols);
+  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc, &xw, &wr, &wm}) v->resize(n_cols);
   // Collisions with every partner i: the f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp),
   // the partner's shape as E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
   for (std::size_t i = 0; i < mix.size(); ++i) {
@@ -81,6 +121,7 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
     for (std::size_t n = 0; n < speed.x.size(); ++n) {
       const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
       const double wn = flux * speed.weight[n];
+      Eigen::Index p = 0;
       for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
         const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
         double shape = 1.0;
@@ -88,36 +129,36 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
           const double y = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
           shape += ai2 * sonine_axial_S2(y) + ai3 * sonine_axial_S3(y);
         }
-        for (std::size_t l = 0; l < g.laguerre.x.size(); ++l) {
+        for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
           const double w = wn * shape * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
-          const double x = r + zk * zk * inv2k, x1 = r + zk1 * zk1 * inv2k, cc = r + zk * zk1 * inv2k;  // c², c′², c·c′
-          basis.eval(x, B.data(), dB.data()), basis.eval(x1, B1.data(), dB1.data());
-          for (std::size_t m = 0; m < N; ++m) {
-            const double loss = w * (x * B[m] - cc * B1[m]);  // c·[c B_m(c²) − c′ B_m(c′²)]
-            for (std::size_t q = 0; q < N; ++q) out.A(Eigen::Index(q), Eigen::Index(m)) += B[q] * loss;
-          }
+          x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
+          wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);    // w c², w c·c′
         }
       }
+      basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
+      loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
+      out.A.noalias() += B * loss.transpose();
     }
   }
   // Averages over f_w (the mass matrix, the scaling term) and f_k (r): c_z = z√(λ/2) resp. z/√2, z ~ N(0, 1),
   // |c_⊥|² = λ·Exp(1) resp. Exp(1).
   const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;
   const double own2 = opt.a2 ? opt.a2[k] : 0.0, own3 = opt.a3 ? opt.a3[k] : 0.0;
-  for (std::size_t h = 0; h < g.hermite.x.size(); ++h)
-    for (std::size_t l = 0; l < g.laguerre.x.size(); ++l) {
-      const double w = g.hermite.weight[h] * g.laguerre.weight[l], x = 0.5 * g.hermite.x[h] * g.hermite.x[h] + g.laguerre.x[l];
-      basis.eval(x, B.data(), dB.data());
-      const double shape = 1.0 + own2 * sonine_S2(x) + own3 * sonine_S3(x);
-      for (std::size_t q = 0; q < N; ++q) out.r[Eigen::Index(q)] += w * shape * x * B[q];
-      const double xw = lam * x;
-      basis.eval(xw, B.data(), dB.data());
-      for (std::size_t q = 0; q < N; ++q)
-        for (std::size_t m = 0; m < N; ++m) {
-          out.M(Eigen::Index(q), Eigen::Index(m)) += w * xw * B[q] * B[m];
-          out.A(Eigen::Index(q), Eigen::Index(m)) -= 0.5 * zeta * w * xw * B[q] * (B[m] + 2.0 * dB[m]);
-        }
-    }
+  {
+    Eigen::Index p = 0;
+    for (std::size_t h = 0; h < g.hermite.x.size(); ++h)
+      for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
+        const double w = g.hermite.weight[h] * g.laguerre.weight[l];
+        x[p] = 0.5 * g.hermite.x[h] * g.hermite.x[h] + g.laguerre.x[l], xw[p] = lam * x[p];
+        wr[p] = w * (1.0 + own2 * sonine_S2(x[p]) + own3 * sonine_S3(x[p])) * x[p], wm[p] = w * xw[p];
+      }
+  }
+  basis.eval(x.data(), P, B.data(), nullptr);
+  out.r = B * wr;
+  basis.eval(xw.data(), P, B.data(), dB.data());
+  loss.array() = B.array().rowwise() * wm.transpose().array();  // here B_q w c_w²
+  out.M.noalias() = loss * B.transpose();
+  out.A.noalias() -= 0.5 * zeta * loss * (B + 2.0 * dB).transpose();
   return out;
 }
 

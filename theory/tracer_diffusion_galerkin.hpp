@@ -25,7 +25,8 @@
 // sonine_quadrature.hpp (the impact speed u, then W and |v_⊥|² given u, σ̂ = ẑ): u by the half-range Gauss rule at
 // constant ε (24 nodes; the 80 of the impact-speed rule for ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
 // for the non-polynomial basis: 5e-4 of the elastic 1:100 light species' factor (1.11014 against 1.10958 with
-// 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, ~6 ms per pair.
+// 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, ~1 ms per pair (the basis
+// evaluated over all points of one impact speed at once, the sum one matrix product); the species on OpenMP threads.
 #include <Eigen/Dense>
 
 #include <complex>
@@ -40,10 +41,12 @@
 
 namespace granmix::theory {
 
-// B_m(x) and x·dB_m/dx, x = c², m < size.
+// B_m(x) and x·dB_m/dx, x = c², m < size, at `count` points at once (the quadratures evaluate ~10⁵ points per pair;
+// point by point the serial recurrence was most of their cost): B[m·count + p] (each function's values contiguous, a
+// row-major size × count matrix); xdB may be null.
 struct RadialBasis {
   std::size_t size = 0;
-  std::function<void(double x, double* B, double* xdB)> eval;
+  std::function<void(const double* x, std::size_t count, double* B, double* xdB)> eval;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 RadialBasis collision_weighted_basis(std::size_t size, double x0);  // 1, then L_{m−1}^(3/2)(x)/√(x + x₀)
