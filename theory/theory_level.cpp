@@ -164,6 +164,7 @@ class KineticLevel final : public TheoryLevel {
 // (README, "The converged tracer problem").
 class ConvergedLevel final : public TheoryLevel {
  public:
+  static constexpr std::size_t converged_species_limit = 100;
   explicit ConvergedLevel(int cooling_order)
       : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order),
         name_(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") {}
@@ -174,6 +175,12 @@ class ConvergedLevel final : public TheoryLevel {
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     if (rates.law().is_viscoelastic())
       throw InputError("level " + name_ + ": needs a constant restitution coefficient (its memory is the settled one; allowed: collisions.restitution = number)");
+    // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
+    // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
+    if (rates.size() > converged_species_limit)
+      throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species need " + std::to_string(rates.size() * rates.size()) +
+                       " Galerkin pair problems per settled state (~1 ms each); the limit is " + std::to_string(converged_species_limit) +
+                       " species (allowed: level = \"kinetic\" for more)");
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;

@@ -8,6 +8,7 @@
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
 #include "theory/temperature_history.hpp"
+#include "theory/theory_level.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -94,4 +95,12 @@ TEST_CASE("2e4 species: the theory refuses with the memory limit named - 1000 sp
   for (std::size_t k = 0; k < 1000; ++k) REQUIRE((std::isfinite(b[k]) && b[k] > 0));
   // Late Haff decay t^(-2) of ⟨T⟩ (settled ratios), as for 500 species: slope within 1e-3 of −2.
   CHECK(std::log10(mix.mean_temperature(b) / mix.mean_temperature(a)) == Approx(-2.0).epsilon(1e-3));
+}
+
+TEST_CASE("kinetic-converged: 101 species refused with the limit named (N^2 Galerkin pair problems per settled state)", "[theory][hard]") {
+  // ~1 ms per pair problem: 101 species are 10201 per sweep point. The refusal comes before any of them is solved.
+  const model::Mixture mix = test::power_law(101);
+  const CollisionRates r(mix, model::Restitution::constant(101, 0.5), model::dilute_contact_values(101));
+  CHECK_THROWS_WITH(make_theory_level("kinetic-converged")->diffusion_at(r, std::vector<double>(101, 1.0)),
+                    Catch::Contains("101 species need 10201 Galerkin pair problems") && Catch::Contains("the limit is 100 species"));
 }
