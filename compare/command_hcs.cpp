@@ -7,7 +7,7 @@
 // D_sonine_factors = [D_k[1]/D_k[1], …, D_k[5]/D_k[1]] (the Sonine orders 1–5, up to the first without a
 // diffusive solution; the kinetic level uses order 4), D_converged_factor = D_k/D_k[1] of the same tracer problem
 // solved without the Sonine truncation and D_converged_change, its change from one basis function fewer
-// (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~6 ms per species and partner),
+// (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~1 ms per species and partner),
 // tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
@@ -37,8 +37,8 @@ namespace granmix::compare {
 
 namespace {
 
-// The converged tracer problem costs ~6 ms per species and partner (twice, for its change): up to this many species (a
-// 20-species gas, 5 s).
+// The converged tracer problem costs ~1 ms per species and partner (twice, for its change): up to this many species (a
+// 20-species gas, 1.6 s).
 constexpr std::size_t max_converged_species = 20;
 
 struct HcsOptions {
