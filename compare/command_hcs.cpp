@@ -37,8 +37,8 @@ namespace granmix::compare {
 
 namespace {
 
-// The converged tracer problem costs ~1 ms per species and partner (twice, for its change): up to this many species (a
-// 20-species gas, 1.6 s).
+// The converged tracer problem costs ~1 ms per species and partner (its change comes from the leading block of the
+// same assembly): up to this many species (a 20-species gas, 1.0 s).
 constexpr std::size_t max_converged_species = 20;
 
 struct HcsOptions {

@@ -66,6 +66,8 @@ struct TracerGalerkin {
 };
 TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const double* T, const RadialBasis& basis,
                                const GalerkinOptions& opt = {});
+// The problem in the first n functions of the basis (a nested basis: its smaller problem without a new quadrature).
+TracerGalerkin leading_block(const TracerGalerkin& g, std::size_t n);
 // D_k (NaN where there is no diffusive solution: a singular or non-positive problem, the Santos–Dufty regime).
 double galerkin_diffusion(const TracerGalerkin& g);
 // The velocity correlation as a sum of decaying modes (the eigenvalues of M⁻¹A): C(s) = Σ_j α_j e^(−λ_j s); none

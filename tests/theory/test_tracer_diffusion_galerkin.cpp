@@ -137,3 +137,20 @@ TEST_CASE("kinetic-converged level: settled D ratios where the Sonine sequence c
     CHECK(msd > 6.0 * d.D[0] * (d.tau0 * std::log1p(t / d.tau0) - 2.0 * d.tau_v[0]));
   }
 }
+
+TEST_CASE("tracer Galerkin: the weighted basis is nested - the problem in 7 functions is the leading block of the one in 8", "[theory]") {
+  // converged_diffusion_change takes D in size − 1 functions from the leading block of one assembly; that holds only
+  // because collision_weighted_basis(7, x₀) is the first 7 functions of collision_weighted_basis(8, x₀) — the
+  // Laguerre index shifted by one, a different x₀ or a reordered basis would move D by far more than 1e-10.
+  const Settled s = fig05(0.5);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double x0 = 0.7;
+    const TracerGalerkin big = tracer_galerkin(s.rates, k, s.T.data(), collision_weighted_basis(8, x0));
+    const TracerGalerkin small = tracer_galerkin(s.rates, k, s.T.data(), collision_weighted_basis(7, x0));
+    const TracerGalerkin block = leading_block(big, 7);
+    INFO("species " << k + 1);
+    CHECK((block.A - small.A).norm() <= 1e-12 * small.A.norm());
+    CHECK((block.M - small.M).norm() <= 1e-12 * small.M.norm());
+    CHECK(galerkin_diffusion(block) == Approx(galerkin_diffusion(small)).epsilon(1e-10));
+  }
+}
