@@ -38,7 +38,7 @@ namespace granmix::compare {
 namespace {
 
 // The converged tracer problem costs ~1 ms per species and partner (its change comes from the leading block of the
-// same assembly): up to this many species (a 20-species gas, 1.0 s).
+// same assembly): up to this many species (a 20-species gas, 0.5 s).
 constexpr std::size_t max_converged_species = 20;
 
 struct HcsOptions {
@@ -111,8 +111,9 @@ int run(const HcsOptions& o) {
   std::vector<double> converged(mix.size(), std::numeric_limits<double>::quiet_NaN()), change = converged;
   if (mix.size() <= max_converged_species)
     for (std::size_t k = 0; k < mix.size(); ++k) {
-      converged[k] = theory::converged_tracer_diffusion(rates, k, d.T.data()).factor;
-      if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(rates, k, d.T.data());
+      const theory::ConvergedDiffusion c = theory::converged_tracer_diffusion(rates, k, d.T.data());
+      converged[k] = c.factor;
+      if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(c);
     }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
   const double eps_one = listed ? o.eps : o.alpha;

@@ -243,13 +243,12 @@ TracerGalerkin leading_block(const TracerGalerkin& g, std::size_t n) {
   return {g.A.topLeftCorner(m, m), g.M.topLeftCorner(m, m), g.r.head(m), g.theta};
 }
 
-double converged_diffusion_change(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt, std::size_t size) {
-  if (size < 3) throw std::invalid_argument("converged_diffusion_change: size must be >= 3");
+double converged_diffusion_change(const ConvergedDiffusion& c) {
   // collision_weighted_basis(size − 1) is the first size − 1 functions of collision_weighted_basis(size) (same x₀):
-  // one assembly, the smaller problem its leading block.
-  const TracerGalerkin g = tracer_galerkin(rates, k, T, collision_weighted_basis(size, basis_x0(rates, k, T)), opt);
-  const double a = galerkin_diffusion(g), b = galerkin_diffusion(leading_block(g, size - 1));
-  return std::abs(a - b) / a;
+  // the smaller problem is the leading block of the same assembly.
+  const std::size_t size = std::size_t(c.problem.M.rows());
+  if (size < 3) throw std::invalid_argument("converged_diffusion_change: size must be >= 3");
+  return std::abs(c.D - galerkin_diffusion(leading_block(c.problem, size - 1))) / c.D;
 }
 
 }  // namespace granmix::theory

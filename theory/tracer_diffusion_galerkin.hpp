@@ -83,8 +83,7 @@ struct ConvergedDiffusion {
 inline constexpr std::size_t converged_diffusion_basis = 8;
 ConvergedDiffusion converged_tracer_diffusion(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt = {},
                                               std::size_t size = converged_diffusion_basis);
-// The truncation left: |D(size) − D(size − 1)|/D(size), relative.
-double converged_diffusion_change(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt = {},
-                                  std::size_t size = converged_diffusion_basis);
+// The truncation left: |D(size) − D(size − 1)|/D(size), relative, of a converged_tracer_diffusion result.
+double converged_diffusion_change(const ConvergedDiffusion& c);
 
 }  // namespace granmix::theory
