@@ -227,15 +227,8 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
-  // The converged level's velocity memory is the settled one (theory/theory_level.cpp, ConvergedLevel): it gives the
-  // settled quantities of a sweep (D ratios, from the MSD increments of a settled start), no history from a start.
-  if (s.theory.level.starts_with("kinetic-converged")) {
-    if (!s.theory.sweep)
-      top.fail("theory", "level \"" + s.theory.level + "\" gives the settled quantities of a sweep only (its velocity memory is the settled one)",
-               "theory.sweep with d_ratio, gamma or cumulant; theory.level = \"kinetic\" for histories");
-    if (s.restitution.is_viscoelastic())
-      top.fail("theory", "level \"" + s.theory.level + "\" needs a constant restitution coefficient", "collisions.restitution = number");
-  }
+  if (s.theory.level.starts_with("kinetic-converged") && s.restitution.is_viscoelastic())
+    top.fail("theory", "level \"" + s.theory.level + "\" needs a constant restitution coefficient", "collisions.restitution = number");
   if (s.theory.msd == "closed" && !settled_start)
     top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
   if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())

@@ -15,6 +15,7 @@
 #include "sonine_moment_table.hpp"
 #include "sonine_pair_terms.hpp"
 #include "sonine_tracer.hpp"
+#include "galerkin_decay.hpp"
 #include "tracer_diffusion_galerkin.hpp"
 #include "model/errors.hpp"
 
@@ -152,12 +153,14 @@ class KineticLevel final : public TheoryLevel {
   std::string name_;
 };
 
-// "kinetic-converged" (cooling_order 2) and "kinetic-converged-cooling3" (3): the kinetic level's settled state (its
-// HCS: T_k and a₂, with cooling_order 3 also a₃) with D_k and the velocity memory of the tracer problem solved without
-// the Sonine truncation (tracer_diffusion_galerkin.hpp): the species' own a's in its velocity distribution, the
-// partners' in the collision operator, the level's cooling rate ζ_k in the scaling term. The MSD is the closed form
-// of that memory at settled ratios (velocity_memory.hpp), so the level holds for settled starts at constant ε
-// (model/scene.cpp refuses others); temperatures, HCS and the tracer limit are the kinetic level's.
+// "kinetic-converged" (cooling_order 2) and "kinetic-converged-cooling3" (3): the kinetic level with the tracer problem
+// solved without the Sonine truncation (tracer_diffusion_galerkin.hpp): the species' own a's in its velocity
+// distribution, the partners' in the collision operator, the level's cooling rate ζ_k in the scaling term.
+// Sweeps: D_k and the velocity memory at the kinetic level's settled state (its HCS: T_k and a₂, with cooling_order 3
+// also a₃), the MSD increments the closed form of that memory (velocity_memory.hpp). Histories: the VACF ODE with
+// the same Galerkin problem following T(t), a₂(t), a₃(t) (GalerkinDecay, galerkin_decay.hpp), from the kinetic
+// level's start. Constant ε only (model/scene.cpp refuses others); temperatures, HCS and the tracer limit are the
+// kinetic level's.
 // Why: at the kinetic level's own settled state the Sonine sequence D[M] of the tracer problem does not converge at
 // strong dissipation (bo1-fig05, ε = 0.2, light species: 0.820, 0.923, 0.825, 0.945 for M = 2…5) and leaves the
 // species' shape out; solved converged with it, the settled D ratios of v1 Figs. 4, 5, 7 move to within 3% of DSMC
@@ -169,18 +172,16 @@ class ConvergedLevel final : public TheoryLevel {
       : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order),
         name_(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") {}
   const char* name() const override { return name_.c_str(); }
-  MsdMethod msd_method(const model::Scene&) const override { return MsdMethod::closed; }
-  void configure(TemperatureOptions& opt, const CollisionRates& rates) const override { base_.configure(opt, rates); }
+  MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep ? MsdMethod::closed : MsdMethod::vacf; }
+  void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
+    base_.configure(opt, rates);
+    if (!opt.vacf) return;
+    refuse_beyond_limits(rates);
+    opt.decay = std::make_shared<GalerkinDecay>(rates, settled_temperatures(rates));
+  }
   // At settled temperature ratios (T sets the scale): the level's steady shape and cooling rates at T.
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
-    if (rates.law().is_viscoelastic())
-      throw InputError("level " + name_ + ": needs a constant restitution coefficient (its memory is the settled one; allowed: collisions.restitution = number)");
-    // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
-    // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
-    if (rates.size() > converged_species_limit)
-      throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species need " + std::to_string(rates.size() * rates.size()) +
-                       " Galerkin pair problems per settled state (~1 ms each); the limit is " + std::to_string(converged_species_limit) +
-                       " species (allowed: level = \"kinetic\" for more)");
+    refuse_beyond_limits(rates);
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;
@@ -238,13 +239,10 @@ class ConvergedLevel final : public TheoryLevel {
     memo_key_ = std::move(key), memo_ = d;
     return d;
   }
-  // A settled start is the level's own settled state, where its memory holds (DSMC starts from the Maxwellian
-  // settled ratios and relaxes to its HCS within a few collisions: before the first sample of a sweep's increments).
+  // A history starts where the kinetic level does (DSMC's start; the memory builds up from U = 0).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
-                                           TemperatureOptions&) const override {
-    if (init.kind != model::InitialState::Kind::hcs)
-      throw InputError("level " + name_ + ": holds for a settled start only (allowed: initial.temperatures = \"hcs\", or a sweep)");
-    return settled_temperatures(rates);
+                                           TemperatureOptions& opt) const override {
+    return base_.initial_temperatures(init, rates, opt);
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;
@@ -254,6 +252,16 @@ class ConvergedLevel final : public TheoryLevel {
   TracerLimit tracer(const CollisionRates& rates) const override { return base_.tracer(rates); }
 
  private:
+  void refuse_beyond_limits(const CollisionRates& rates) const {
+    if (rates.law().is_viscoelastic())
+      throw InputError("level " + name_ + ": needs a constant restitution coefficient (allowed: collisions.restitution = number)");
+    // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
+    // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
+    if (rates.size() > converged_species_limit)
+      throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species need " + std::to_string(rates.size() * rates.size()) +
+                       " Galerkin pair problems per settled state (~1 ms each); the limit is " + std::to_string(converged_species_limit) +
+                       " species (allowed: level = \"kinetic\" for more)");
+  }
   KineticLevel base_;
   int cooling_order_;
   std::string name_;

@@ -87,101 +87,134 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
           }};
 }
 
-TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const double* T, const RadialBasis& basis, const GalerkinOptions& opt) {
+void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out) {
   const model::Mixture& mix = rates.mixture();
+  const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
+  if (weight == 0.0) return;
   const std::size_t N = basis.size;
   const Rules& g = rules();
   const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule() : constant_eps_speed_rule();
-  const double lam = opt.weight_temperature;
-  if (!(lam > 0.0 && std::isfinite(lam))) throw std::invalid_argument("tracer_galerkin: the weight temperature must be positive");
-  TracerGalerkin out;
-  const double theta_k = T[k] / mix[k].mass, theta_w = lam * theta_k, inv2k = 0.5 / theta_k;
-  out.theta = theta_k;
-  out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
-  out.M = out.A;
-  out.r = Eigen::VectorXd::Zero(Eigen::Index(N));
+  const double lam = weight_temperature, theta_w = lam * theta_k, inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
+  const double mu = mix[i].mass / (mix[i].mass + mix[k].mass);
+  const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);
+  const double flux = weight * 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
+  bool shaped = false;  // a Maxwellian partner alone: no shape factors to evaluate
+  for (std::size_t j = 0; j < count; ++j) shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
   // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
   const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
-  thread_local Rows B, B1, dB, loss;  // reused across calls (fresh ones cost page faults)
-  thread_local Eigen::VectorXd x, x1, wx, wcc, xw, wr, wm;
-  for (Rows* m : {&B, &B1, &dB, &loss}) m->resize(n_rows, n_cols);
-  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc, &xw, &wr, &wm}) v->resize(n_cols);
-  // Collisions with every partner i: the f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp),
-  // the partner's shape as E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
-  for (std::size_t i = 0; i < mix.size(); ++i) {
-    const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
-    if (weight == 0.0) continue;
-    const double theta_i = T[i] / mix[i].mass, mu = mix[i].mass / (mix[i].mass + mix[k].mass);
-    const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);
-    const double ai2 = opt.a2 ? opt.a2[i] : 0.0, ai3 = opt.a3 ? opt.a3[i] : 0.0, inv2i = 0.5 / theta_i;
-    const double flux = weight * 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
-    for (std::size_t n = 0; n < speed.x.size(); ++n) {
-      const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
-      const double wn = flux * speed.weight[n];
-      Eigen::Index p = 0;
-      for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
-        const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
-        double shape = 1.0;
-        if (ai2 != 0.0 || ai3 != 0.0) {
-          const double y = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
-          shape += ai2 * sonine_axial_S2(y) + ai3 * sonine_axial_S3(y);
-        }
-        for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
-          const double w = wn * shape * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
-          x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
-          wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);    // w c², w c·c′
-        }
+  thread_local Rows B, B1, loss, shaped_loss;  // reused across calls (fresh ones cost page faults)
+  thread_local Eigen::VectorXd x, x1, wx, wcc, y;
+  for (Rows* m : {&B, &B1, &loss}) m->resize(n_rows, n_cols);
+  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc, &y}) v->resize(n_cols);
+  // The f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp), the partner's shape as
+  // E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
+  for (std::size_t n = 0; n < speed.x.size(); ++n) {
+    const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
+    const double wn = flux * speed.weight[n];
+    Eigen::Index p = 0;
+    for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
+      const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
+      const double ciz2 = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
+      for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
+        const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
+        x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
+        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k), y[p] = ciz2;  // w c², w c·c′
       }
-      basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
-      loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
-      out.A.noalias() += B * loss.transpose();
+    }
+    basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
+    loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
+    for (std::size_t j = 0; j < count; ++j) {
+      if (!shaped) {
+        out[j].noalias() += B * loss.transpose();
+        continue;
+      }
+      const PartnerShape& c = shapes[j];
+      shaped_loss.resize(n_rows, n_cols);
+      for (Eigen::Index q = 0; q < n_cols; ++q)
+        shaped_loss.col(q) = loss.col(q) * (c.one + c.a2 * sonine_axial_S2(y[q]) + c.a3 * sonine_axial_S3(y[q]));
+      out[j].noalias() += B * shaped_loss.transpose();
     }
   }
-  // Averages over f_w (the mass matrix, the scaling term) and f_k (r): c_z = z√(λ/2) resp. z/√2, z ~ N(0, 1),
-  // |c_⊥|² = λ·Exp(1) resp. Exp(1).
-  const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;
-  const double own2 = opt.a2 ? opt.a2[k] : 0.0, own3 = opt.a3 ? opt.a3[k] : 0.0;
-  {
-    Eigen::Index p = 0;
-    for (std::size_t h = 0; h < g.hermite.x.size(); ++h)
-      for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
-        const double w = g.hermite.weight[h] * g.laguerre.weight[l];
-        x[p] = 0.5 * g.hermite.x[h] * g.hermite.x[h] + g.laguerre.x[l], xw[p] = lam * x[p];
-        wr[p] = w * (1.0 + own2 * sonine_S2(x[p]) + own3 * sonine_S3(x[p])) * x[p], wm[p] = w * xw[p];
-      }
-  }
+}
+
+GalerkinAverages galerkin_averages(const RadialBasis& basis, double weight_temperature) {
+  const Rules& g = rules();
+  const double lam = weight_temperature;
+  const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
+  const auto n_rows = static_cast<Eigen::Index>(basis.size), n_cols = static_cast<Eigen::Index>(P);
+  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
+  Rows B(n_rows, n_cols), dB(n_rows, n_cols);
+  Eigen::VectorXd x(n_cols), xw(n_cols), wm(n_cols);
+  Eigen::MatrixXd wr(n_cols, 3);
+  // c_z = z√(λ/2) resp. z/√2, z ~ N(0, 1), |c_⊥|² = λ·Exp(1) resp. Exp(1).
+  Eigen::Index p = 0;
+  for (std::size_t h = 0; h < g.hermite.x.size(); ++h)
+    for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
+      const double w = g.hermite.weight[h] * g.laguerre.weight[l];
+      x[p] = 0.5 * g.hermite.x[h] * g.hermite.x[h] + g.laguerre.x[l], xw[p] = lam * x[p], wm[p] = w * xw[p];
+      wr(p, 0) = w * x[p], wr(p, 1) = w * sonine_S2(x[p]) * x[p], wr(p, 2) = w * sonine_S3(x[p]) * x[p];
+    }
+  GalerkinAverages out;
   basis.eval(x.data(), P, B.data(), nullptr);
-  out.r = B * wr;
+  const Eigen::MatrixXd r = B * wr;
+  for (int j = 0; j < 3; ++j) out.r[j] = r.col(j);
   basis.eval(xw.data(), P, B.data(), dB.data());
-  loss.array() = B.array().rowwise() * wm.transpose().array();  // here B_q w c_w²
-  out.M.noalias() = loss * B.transpose();
-  out.A.noalias() -= 0.5 * zeta * loss * (B + 2.0 * dB).transpose();
+  const Rows BW = B.array().rowwise() * wm.transpose().array();  // B_q w c_w²
+  out.M.noalias() = BW * B.transpose();
+  out.S.noalias() = BW * (B + 2.0 * dB).transpose();
   return out;
 }
 
-namespace {
+TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const double* T, const RadialBasis& basis, const GalerkinOptions& opt) {
+  const model::Mixture& mix = rates.mixture();
+  const std::size_t N = basis.size;
+  const double lam = opt.weight_temperature;
+  if (!(lam > 0.0 && std::isfinite(lam))) throw std::invalid_argument("tracer_galerkin: the weight temperature must be positive");
+  TracerGalerkin out;
+  const double theta_k = T[k] / mix[k].mass;
+  out.theta = theta_k;
+  out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
+  out.M = out.A;
+  out.r = Eigen::VectorXd::Zero(Eigen::Index(N));
+  for (std::size_t i = 0; i < mix.size(); ++i) {  // collisions with every partner i
+    const PartnerShape shape{1.0, opt.a2 ? opt.a2[i] : 0.0, opt.a3 ? opt.a3[i] : 0.0};
+    add_pair_collisions(rates, k, i, theta_k, T[i] / mix[i].mass, basis, lam, &shape, 1, &out.A);
+  }
+  const GalerkinAverages avg = galerkin_averages(basis, lam);
+  const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;
+  out.M = avg.M;
+  out.A -= 0.5 * zeta * avg.S;
+  out.r = avg.r[0] + (opt.a2 ? opt.a2[k] : 0.0) * avg.r[1] + (opt.a3 ? opt.a3[k] : 0.0) * avg.r[2];
+  return out;
+}
 
-// The problem in an M-orthonormal basis of the span: the weighted functions come close to the constant B₀ where the
-// partners are fast (x₀ ≫ 1, a heavy tracer), so directions with an M-eigenvalue below 1e-11 of the largest are
-// dropped (Φ = Q Λ^(−1/2) over the kept ones). Then ẏ = −K y, K = ΦᵀAΦ, y(0) = ΦᵀM e₀ (the M-projection of
-// d(0) = e₀, exact where e₀ lies in the kept span), C(s) = 2θ (Φᵀr)·y(s).
-struct Reduced {
-  Eigen::MatrixXd K;
-  Eigen::VectorXd y0, r;
-};
-Reduced reduce(const TracerGalerkin& g) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(g.M);
+Eigen::MatrixXd m_orthonormal_basis(const Eigen::MatrixXd& M) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(M);
   if (es.info() != Eigen::Success) throw NumericalError("tracer diffusion Galerkin: the mass matrix (Eigen SelfAdjointEigenSolver) failed");
   const Eigen::VectorXd mu = es.eigenvalues();
   const double floor = 1e-11 * mu.maxCoeff();
   std::vector<Eigen::Index> kept;
   for (Eigen::Index j = 0; j < mu.size(); ++j)
     if (mu[j] > floor) kept.push_back(j);
-  Eigen::MatrixXd Phi(g.M.rows(), Eigen::Index(kept.size()));
+  Eigen::MatrixXd Phi(M.rows(), Eigen::Index(kept.size()));
   for (std::size_t j = 0; j < kept.size(); ++j) Phi.col(Eigen::Index(j)) = es.eigenvectors().col(kept[j]) / std::sqrt(mu[kept[j]]);
+  return Phi;
+}
+
+namespace {
+
+// The problem in an M-orthonormal basis of the span (m_orthonormal_basis): ẏ = −K y, K = ΦᵀAΦ, y(0) = ΦᵀM e₀ (the M-projection of
+// d(0) = e₀, exact where e₀ lies in the kept span), C(s) = 2θ (Φᵀr)·y(s).
+struct Reduced {
+  Eigen::MatrixXd K;
+  Eigen::VectorXd y0, r;
+};
+Reduced reduce(const TracerGalerkin& g) {
+  const Eigen::MatrixXd Phi = m_orthonormal_basis(g.M);
   return {Phi.transpose() * g.A * Phi, Phi.transpose() * g.M.col(0), Phi.transpose() * g.r};
 }
 
@@ -212,10 +245,8 @@ std::optional<VelocityMemory> galerkin_memory(const TracerGalerkin& g) {
   return m;
 }
 
-namespace {
-
 // x₀ of collision_weighted_basis for species k (see the header).
-double basis_x0(const CollisionRates& rates, std::size_t k, const double* T) {
+double converged_basis_x0(const CollisionRates& rates, std::size_t k, const double* T) {
   const model::Mixture& mix = rates.mixture();
   double sum = 0.0, mean_speed = 0.0;  // the partners' mean speed √(8θ_i/π), weighted with n_i σ_ki² χ_ki
   for (std::size_t i = 0; i < mix.size(); ++i) {
@@ -225,13 +256,11 @@ double basis_x0(const CollisionRates& rates, std::size_t k, const double* T) {
   return std::pow(mean_speed / sum, 2) * mix[k].mass / (2.0 * T[k]);
 }
 
-}  // namespace
-
 ConvergedDiffusion converged_tracer_diffusion(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt,
                                               std::size_t size) {
   const double D1 = T[k] / (rates.mixture()[k].mass * rates.inv_tau_v_species(k, T));
   ConvergedDiffusion out;
-  out.problem = tracer_galerkin(rates, k, T, collision_weighted_basis(size, basis_x0(rates, k, T)), opt);
+  out.problem = tracer_galerkin(rates, k, T, collision_weighted_basis(size, converged_basis_x0(rates, k, T)), opt);
   out.D = galerkin_diffusion(out.problem);
   out.factor = out.D / D1;
   return out;

@@ -58,6 +58,23 @@ struct GalerkinOptions {
   const double* a3 = nullptr;
 };
 
+// The pieces of the problem, for callers that assemble it at many states (galerkin_decay.hpp):
+// the partner's shape f_i/f_M,i = one + a2 S₂(c_i²) + a3 S₃(c_i²);
+struct PartnerShape {
+  double one = 1.0, a2 = 0.0, a3 = 0.0;
+};
+// the collisions of species k (its tracer at θ_k = T_k/m_k) with partner i at θ_i, for each of `count` partner shapes:
+// out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k);
+void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out);
+// the averages that do not depend on the state: M, the scaling matrix S_nm = ⟨c² B_n (B_m + 2c² B_m′)⟩_w (A gets
+// −(ζ/2)S) and r = r[0] + a_k2 r[1] + a_k3 r[2] over f_k.
+struct GalerkinAverages {
+  Eigen::MatrixXd M, S;
+  Eigen::VectorXd r[3];
+};
+GalerkinAverages galerkin_averages(const RadialBasis& basis, double weight_temperature);
+
 // The assembled problem of species k at the temperatures T.
 struct TracerGalerkin {
   Eigen::MatrixXd A, M;
@@ -68,6 +85,10 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
                                const GalerkinOptions& opt = {});
 // The problem in the first n functions of the basis (a nested basis: its smaller problem without a new quadrature).
 TracerGalerkin leading_block(const TracerGalerkin& g, std::size_t n);
+// An M-orthonormal basis of the span (columns Φ, ΦᵀMΦ = 1): the weighted functions come close to the constant B₀
+// where the partners are fast (x₀ ≫ 1, a heavy tracer), so directions with an M-eigenvalue below 1e-11 of the
+// largest are dropped (Φ = Q Λ^(−1/2) over the kept ones).
+Eigen::MatrixXd m_orthonormal_basis(const Eigen::MatrixXd& M);
 // D_k (NaN where there is no diffusive solution: a singular or non-positive problem, the Santos–Dufty regime).
 double galerkin_diffusion(const TracerGalerkin& g);
 // The velocity correlation as a sum of decaying modes (the eigenvalues of M⁻¹A): C(s) = Σ_j α_j e^(−λ_j s); none
@@ -81,6 +102,7 @@ struct ConvergedDiffusion {
   TracerGalerkin problem;
 };
 inline constexpr std::size_t converged_diffusion_basis = 8;
+double converged_basis_x0(const CollisionRates& rates, std::size_t k, const double* T);  // its x₀ at the temperatures T
 ConvergedDiffusion converged_tracer_diffusion(const CollisionRates& rates, std::size_t k, const double* T, const GalerkinOptions& opt = {},
                                               std::size_t size = converged_diffusion_basis);
 // The truncation left: |D(size) − D(size − 1)|/D(size), relative, of a converged_tracer_diffusion result.

@@ -1,0 +1,148 @@
+#include "galerkin_decay.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <stdexcept>
+
+#include "model/errors.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_diffusion_galerkin.hpp: why 2)
+
+}  // namespace
+
+GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size)
+    : rates_(rates), size_(size), tables_(rates.size() * rates.size()) {
+  if (rates.law().is_viscoelastic())
+    throw InputError("the converged velocity memory needs a constant restitution coefficient (allowed: collisions.restitution = number)");
+  const std::size_t N = rates.size();
+  for (std::size_t k = 0; k < N; ++k) {
+    Species sp;
+    sp.basis = collision_weighted_basis(size, converged_basis_x0(rates, k, T_ref.data()));
+    const GalerkinAverages avg = galerkin_averages(sp.basis, weight_temperature);
+    const Eigen::MatrixXd Phi = m_orthonormal_basis(avg.M);
+    sp.kept = std::size_t(Phi.cols());
+    // H y₀ = α e₁ for y₀ = ΦᵀMe₀ (the coordinates of B₀ = 1), v = y₀ − α e₁ with α of the sign that avoids cancellation.
+    const Eigen::VectorXd y0 = Phi.transpose() * avg.M.col(0);
+    const double alpha = y0[0] > 0.0 ? -y0.norm() : y0.norm();
+    Eigen::VectorXd v = y0;
+    v[0] -= alpha;
+    const auto n = Eigen::Index(sp.kept);
+    const Eigen::MatrixXd H = Eigen::MatrixXd::Identity(n, n) - 2.0 * v * v.transpose() / v.squaredNorm();
+    Eigen::VectorXd delta = Eigen::VectorXd::Ones(n);
+    delta[0] = alpha;
+    sp.Winv = delta.asDiagonal() * H * Phi.transpose();
+    sp.W = Phi * H * delta.cwiseInverse().asDiagonal();
+    sp.S = sp.Winv * avg.S.transpose() * sp.W;
+    for (int j = 0; j < 3; ++j) sp.s[std::size_t(j)] = sp.Winv * avg.r[j];
+    species_.push_back(std::move(sp));
+  }
+  // Diffusive at the reference state (Maxwellian partners, ζ = ξ_k): every eigenvalue of Ã decays (Ã is similar to
+  // the settled problem's K of galerkin_memory).
+  std::vector<double> xi(N);
+  rates.xi_all(T_ref.data(), xi.data());
+  for (std::size_t k = 0; k < N; ++k) {
+    Species& sp = species_[k];
+    const Eigen::MatrixXd A = collision_operator(k, T_ref.data(), nullptr, nullptr) - 0.5 * xi[k] * sp.S;
+    const Eigen::EigenSolver<Eigen::MatrixXd> es(A, false);
+    if (es.info() != Eigen::Success) throw NumericalError("converged velocity memory: eigenvalues (Eigen EigenSolver) failed");
+    for (Eigen::Index j = 0; j < es.eigenvalues().size(); ++j) sp.diffusive = sp.diffusive && es.eigenvalues()[j].real() > 0.0;
+  }
+}
+
+GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i, double rho) const {
+  const Species& sp = species_[k];
+  const auto n = Eigen::Index(size_);
+  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  Eigen::MatrixXd G[3] = {Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
+  add_pair_collisions(rates_, k, i, 0.5, 0.5 * rho, sp.basis, weight_temperature, shapes, 3, G);  // √(2θ_k) = 1
+  Sources out;
+  for (std::size_t j = 0; j < 3; ++j) out[j] = sp.Winv * G[j].transpose() * sp.W;
+  return out;
+}
+
+const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, long j) const {
+  std::map<long, Sources>& table = tables_[k * rates_.size() + i];
+  auto it = table.find(j);
+  if (it == table.end()) it = table.emplace(j, pair_sources(k, i, std::exp(double(j) * pair_grid_step))).first;
+  return it->second;
+}
+
+void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const {
+  const model::Mixture& mix = rates_.mixture();
+  const double theta_k = T[k] / mix[k].mass, scale = std::sqrt(2.0 * theta_k);
+  for (std::size_t i = 0; i < mix.size(); ++i) {
+    const double rho = T[i] / mix[i].mass / theta_k;
+    if (!(rho > 0.0 && std::isfinite(rho))) throw NumericalError("converged velocity memory: temperature ratio not finite and positive");
+    const double w[3] = {scale, scale * (a2 ? a2[i] : 0.0), scale * (a3 ? a3[i] : 0.0)};
+    if (exact) {
+      const Sources s = pair_sources(k, i, rho);
+      for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
+      continue;
+    }
+    // Catmull–Rom between nodes j and j + 1 (t ∈ [0, 1)); at a node (t = 0: the own species, ρ = 1) that node alone.
+    const double u = std::log(rho) / pair_grid_step, jf = std::floor(u), t = u - jf;
+    const long j = long(jf);
+    if (t == 0.0) {
+      const Sources& p = node(k, i, j);
+      for (std::size_t s = 0; s < 3; ++s) out += w[s] * p[s];
+      continue;
+    }
+    const double c[4] = {0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t),
+                         0.5 * (t + 4.0 * t * t - 3.0 * t * t * t), 0.5 * (-t * t + t * t * t)};
+    for (long m = 0; m < 4; ++m) {
+      const Sources& p = node(k, i, j - 1 + m);
+      for (std::size_t s = 0; s < 3; ++s)
+        if (w[s] != 0.0) out += (w[s] * c[m]) * p[s];
+    }
+  }
+}
+
+Eigen::MatrixXd GalerkinDecay::collision_operator(std::size_t k, const double* T, const double* a2, const double* a3) const {
+  const auto n = Eigen::Index(species_[k].kept);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+  add_collisions(k, T, a2, a3, false, out);
+  return out;
+}
+
+Eigen::MatrixXd GalerkinDecay::collision_operator_exact(std::size_t k, const double* T, const double* a2, const double* a3) const {
+  const auto n = Eigen::Index(species_[k].kept);
+  Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+  add_collisions(k, T, a2, a3, true, out);
+  return out;
+}
+
+void GalerkinDecay::rates(const double* T, const double* xi, double* nu) const {
+  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = 0.5 * xi[k] + rates_.inv_tau_v_species(k, T);
+}
+
+void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q, double* dQ, double*,
+                                      const double* a2, const double* a3) const {
+  const std::size_t N = rates_.size();
+  for (std::size_t k = 0; k < N; ++k) {
+    const Species& sp = species_[k];
+    const double theta = T[k] / rates_.mixture()[k].mass;
+    if (!sp.diffusive) {  // no diffusive solution: first-Sonine ν_k, the other unknowns decoupled
+      const double nu1 = 0.5 * xi[k] + rates_.inv_tau_v_species(k, T);
+      dQ[k] = 3.0 * theta - nu1 * Q[k];
+      for (std::size_t p = 1; p < size_; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
+      continue;
+    }
+    const auto n = Eigen::Index(sp.kept);
+    work_.setZero(n, n);
+    add_collisions(k, T, a2, a3, false, work_);
+    work_ -= 0.5 * xi[k] * sp.S;
+    u_.resize(n);
+    for (Eigen::Index p = 0; p < n; ++p) u_[p] = Q[std::size_t(p) * N + k];
+    du_.noalias() = -work_ * u_;
+    du_ += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]) - 0.5 * xi[k] * u_;
+    for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du_[p];
+    for (std::size_t p = sp.kept; p < size_; ++p) dQ[p * N + k] = 0.0;  // unknowns beyond the kept span stay 0
+  }
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,79 @@
+#pragma once
+// The converged tracer problem in time: the velocity correlation of the kinetic-converged level along a history
+// (issue 12). tracer_diffusion_galerkin.hpp solves the tracer problem at one settled state; here the same Galerkin
+// problem follows the temperatures T(t) and the Sonine shapes a₂(t), a₃(t) of the cooling closure, as SonineDecay
+// (sonine2_diffusion.hpp) does in the Sonine basis, whose expansion does not converge at strong dissipation.
+//
+// Forward form. g(v, t) = ⟨Δr_k δ(v − v_k(t))⟩ obeys the tracer (Boltzmann–Lorentz) equation with the source v f_k
+// (dΔr/dt = v), and Q_k = ⟨Δr_k·v_k⟩ = ∫v·g dv. With g in the trial space f_w c Σ_q b_q B_q(c²) (f_w the Maxwellian of
+// temperature λT_k(t), c = v/√(2θ_k(t)), θ_k = T_k/m_k) and Y_n = ⟨c B_n·Δr_k⟩ = (M b)_n, the moment equations
+// are exact up to the closure g ≈ its projection:
+//   dY/dt = √(2θ_k) r − Aᵀ M⁻¹ Y,   A = A_coll − (ξ_k/2) S,
+// with A_coll, M, S, r of tracer_diffusion_galerkin.hpp at the current state (S, the scaling term, from dc/dt =
+// (ξ_k/2)c; ξ_k = −d ln T_k/dt of the cooling closure, the rate of the same a's the operator holds). In the
+// elastic limit the steady Q is 2θ_k r·A⁻¹M e₀ = 3D_k of galerkin_diffusion: the adjoint problem's D (duality).
+// The unknowns are U = Δ H Φᵀ-coordinates of Z = √(2θ_k) Y: Φ the M-orthonormal basis (m_orthonormal_basis), H
+// the Householder reflection taking the coordinates of B₀ = 1 to the first axis, Δ = diag(|ΦᵀMe₀|, 1, …), so that
+// U₀ = Q_k (the VelocityDecay contract) and
+//   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
+// The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
+// a_i3 G³(ρ)], ρ = θ_i/θ_k, the pair problem at θ_k = 1/2 (add_pair_collisions). Those are tabulated on a grid in
+// ln ρ (step pair_grid_step) as the history reaches them, ~3 ms per node, and interpolated by Catmull–Rom cubics
+// (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
+// reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.
+// A species whose settled problem has no decaying solution (a rare grain at the Santos–Dufty edge) keeps one mode at
+// the first-Sonine ν_k = τ_v,k⁻¹ + ξ_k/2, its other unknowns decoupled, as SonineDecay does. Constant ε only.
+#include <Eigen/Dense>
+
+#include <array>
+#include <cstddef>
+#include <map>
+#include <vector>
+
+#include "collision_rates.hpp"
+#include "cooling_model.hpp"
+#include "tracer_diffusion_galerkin.hpp"
+
+namespace granmix::theory {
+
+// The step in ln(θ_i/θ_k) of the pair tables: interpolation error 5e-5 of the operator, 2e-6 of the MSD at settled
+// ratios (tests/theory/test_galerkin_decay.cpp).
+inline constexpr double pair_grid_step = 0.125;
+
+class GalerkinDecay final : public VelocityDecay {
+ public:
+  // T_ref: the temperatures that fix each species' basis (x₀) and whether it is diffusive.
+  GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size = converged_diffusion_basis);
+  void rates(const double* T, const double* xi, double* nu) const override;  // the first-Sonine ν_k
+  std::size_t modes() const override { return size_; }
+  bool uses_sonine_coefficients() const override { return true; }
+  void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ, double* nu,
+                         const double* a2, const double* a3) const override;
+  // Ã_coll of species k at the temperatures T and shapes a2, a3 (null: Maxwellian), interpolated; for tests.
+  Eigen::MatrixXd collision_operator(std::size_t k, const double* T, const double* a2, const double* a3) const;
+  // The same assembled directly (no table): the interpolation's reference.
+  Eigen::MatrixXd collision_operator_exact(std::size_t k, const double* T, const double* a2, const double* a3) const;
+
+ private:
+  using Sources = std::array<Eigen::MatrixXd, 3>;  // Ã of G⁰, G², G³
+  struct Species {
+    RadialBasis basis;
+    Eigen::MatrixXd W, Winv;  // coordinates: Ã = Winv·Xᵀ·W for an assembled X; W = ΦHΔ⁻¹, Winv = ΔHΦᵀ
+    Eigen::MatrixXd S;        // Ã of the scaling matrix
+    std::array<Eigen::VectorXd, 3> s;
+    std::size_t kept = 0;
+    bool diffusive = true;
+  };
+  Sources pair_sources(std::size_t k, std::size_t i, double rho) const;  // assembled and transformed
+  const Sources& node(std::size_t k, std::size_t i, long j) const;
+  void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
+
+  const CollisionRates& rates_;
+  std::size_t size_;
+  std::vector<Species> species_;
+  mutable std::vector<std::map<long, Sources>> tables_;  // per ordered pair (k·N + i): grid node j ↦ Ã sources at ln ρ = j·step
+  mutable Eigen::MatrixXd work_;
+  mutable Eigen::VectorXd u_, du_;
+};
+
+}  // namespace granmix::theory
