@@ -293,7 +293,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
@@ -419,6 +419,9 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "kinetic" && !cooling3 && !converged)
           t.fail("correction_from", "\"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"" +
                  level + "\"", "theory.level = \"kinetic-cooling3\" or \"kinetic-converged\", or correction_from = \"paper\"");
+        if ((lower == "converged" || lower == "sonine4") && level != "kinetic-converged-cooling3")
+          t.fail("correction_from", "\"" + lower + "\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"" + level + "\"",
+                 "theory.level = \"kinetic-converged-cooling3\", or correction_from = \"paper\" or \"kinetic\"");
         if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
                  level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");

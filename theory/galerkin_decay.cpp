@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 #include "model/errors.hpp"
@@ -45,6 +46,7 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
   // the settled problem's K of galerkin_memory).
   std::vector<double> xi(N);
   rates.xi_all(T_ref.data(), xi.data());
+  prefetch(T_ref.data());
   for (std::size_t k = 0; k < N; ++k) {
     Species& sp = species_[k];
     const Eigen::MatrixXd A = collision_operator(k, T_ref.data(), nullptr, nullptr) - 0.5 * xi[k] * sp.S;
@@ -72,30 +74,78 @@ const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, 
   return it->second;
 }
 
+namespace {
+
+// Where ln(θ_i/θ_k) falls on the grid: node j and the offset t ∈ [0, 1) towards j + 1.
+struct GridPoint {
+  long j;
+  double t;
+};
+GridPoint grid_point(double rho) {
+  if (!(rho > 0.0 && std::isfinite(rho))) throw NumericalError("converged velocity memory: temperature ratio not finite and positive");
+  const double u = std::log(rho) / pair_grid_step, jf = std::floor(u);
+  return {long(jf), u - jf};
+}
+
+}  // namespace
+
+void GalerkinDecay::prefetch(const double* T) const {
+  // The nodes the next assembly needs and the tables lack, computed together on OpenMP threads (each node wholly on
+  // one thread: the numbers do not depend on the thread count). A history moves every pair's ratio at once, so most
+  // new nodes come in batches.
+  const model::Mixture& mix = rates_.mixture();
+  const std::size_t N = mix.size();
+  std::vector<std::array<long, 3>> missing;  // k, i, j
+  for (std::size_t k = 0; k < N; ++k) {
+    if (!species_[k].diffusive) continue;
+    const double theta_k = T[k] / mix[k].mass;
+    for (std::size_t i = 0; i < N; ++i) {
+      const GridPoint g = grid_point(T[i] / mix[i].mass / theta_k);
+      const std::map<long, Sources>& table = tables_[k * N + i];
+      for (long j = g.t == 0.0 ? g.j : g.j - 1; j <= (g.t == 0.0 ? g.j : g.j + 2); ++j)
+        if (!table.count(j)) missing.push_back({long(k), long(i), j});
+    }
+  }
+  if (missing.empty()) return;
+  std::vector<Sources> computed(missing.size());
+  std::vector<std::exception_ptr> failed(missing.size());
+#pragma omp parallel for schedule(dynamic, 1) if (missing.size() > 1)
+  for (std::size_t m = 0; m < missing.size(); ++m) {
+    try {
+      computed[m] = pair_sources(std::size_t(missing[m][0]), std::size_t(missing[m][1]), std::exp(double(missing[m][2]) * pair_grid_step));
+    } catch (...) {
+      failed[m] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  for (std::size_t m = 0; m < missing.size(); ++m)
+    tables_[std::size_t(missing[m][0]) * N + std::size_t(missing[m][1])].emplace(missing[m][2], std::move(computed[m]));
+}
+
 void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const {
   const model::Mixture& mix = rates_.mixture();
   const double theta_k = T[k] / mix[k].mass, scale = std::sqrt(2.0 * theta_k);
   for (std::size_t i = 0; i < mix.size(); ++i) {
     const double rho = T[i] / mix[i].mass / theta_k;
-    if (!(rho > 0.0 && std::isfinite(rho))) throw NumericalError("converged velocity memory: temperature ratio not finite and positive");
     const double w[3] = {scale, scale * (a2 ? a2[i] : 0.0), scale * (a3 ? a3[i] : 0.0)};
     if (exact) {
       const Sources s = pair_sources(k, i, rho);
       for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
       continue;
     }
-    // Catmull–Rom between nodes j and j + 1 (t ∈ [0, 1)); at a node (t = 0: the own species, ρ = 1) that node alone.
-    const double u = std::log(rho) / pair_grid_step, jf = std::floor(u), t = u - jf;
-    const long j = long(jf);
+    // Catmull–Rom between nodes j and j + 1; at a node (t = 0: the own species, ρ = 1) that node alone.
+    const GridPoint g = grid_point(rho);
+    const double t = g.t;
     if (t == 0.0) {
-      const Sources& p = node(k, i, j);
+      const Sources& p = node(k, i, g.j);
       for (std::size_t s = 0; s < 3; ++s) out += w[s] * p[s];
       continue;
     }
     const double c[4] = {0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t),
                          0.5 * (t + 4.0 * t * t - 3.0 * t * t * t), 0.5 * (-t * t + t * t * t)};
     for (long m = 0; m < 4; ++m) {
-      const Sources& p = node(k, i, j - 1 + m);
+      const Sources& p = node(k, i, g.j - 1 + m);
       for (std::size_t s = 0; s < 3; ++s)
         if (w[s] != 0.0) out += (w[s] * c[m]) * p[s];
     }
@@ -123,6 +173,7 @@ void GalerkinDecay::rates(const double* T, const double* xi, double* nu) const {
 void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q, double* dQ, double*,
                                       const double* a2, const double* a3) const {
   const std::size_t N = rates_.size();
+  prefetch(T);
   for (std::size_t k = 0; k < N; ++k) {
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;

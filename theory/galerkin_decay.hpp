@@ -18,7 +18,8 @@
 //   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
 // The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
 // a_i3 G³(ρ)], ρ = θ_i/θ_k, the pair problem at θ_k = 1/2 (add_pair_collisions). Those are tabulated on a grid in
-// ln ρ (step pair_grid_step) as the history reaches them, ~3 ms per node, and interpolated by Catmull–Rom cubics
+// ln ρ (step pair_grid_step) as the history reaches them, ~3 ms per node (those one right-hand side needs on OpenMP
+// threads together), and interpolated by Catmull–Rom cubics
 // (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
 // reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.
 // A species whose settled problem has no decaying solution (a rare grain at the Santos–Dufty edge) keeps one mode at
@@ -66,6 +67,7 @@ class GalerkinDecay final : public VelocityDecay {
   };
   Sources pair_sources(std::size_t k, std::size_t i, double rho) const;  // assembled and transformed
   const Sources& node(std::size_t k, std::size_t i, long j) const;
+  void prefetch(const double* T) const;  // the nodes an assembly at T needs, computed in parallel
   void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
 
   const CollisionRates& rates_;

@@ -273,6 +273,10 @@ class ConvergedLevel final : public TheoryLevel {
 
 std::string companion_level(const std::string& level, const std::string& correction) {
   if (correction == "paper" || correction == "kinetic") return correction;
+  // The two truncations of kinetic-converged-cooling3 one at a time: its temperatures at the first Sonine ("converged":
+  // kinetic-converged) and its D at Sonine order 4 ("sonine4": kinetic-cooling3).
+  if (level == "kinetic-converged-cooling3" && correction == "converged") return "kinetic-converged";
+  if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
   if (correction == "sonine1" && (level == "kinetic" || level == "kinetic-cooling3")) return level + "-sonine1";
   throw std::invalid_argument("no companion level '" + correction + "' beside the level '" + level + "'");

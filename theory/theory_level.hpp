@@ -60,7 +60,8 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name);
 
 // The level whose curves a scene at `level` compares with for correction_from = `correction` (theory.tsv columns
 // `<quantity>_<correction>`): "paper", "kinetic", "cooling3" → kinetic-cooling3, "sonine1" → the level with the
-// first-Sonine D (kinetic-sonine1, kinetic-cooling3-sonine1). Throws std::invalid_argument where there is none
+// first-Sonine D (kinetic-sonine1, kinetic-cooling3-sonine1); beside kinetic-converged-cooling3 also "converged" →
+// kinetic-converged (its first-Sonine temperatures) and "sonine4" → kinetic-cooling3 (its D at Sonine order 4). Throws std::invalid_argument where there is none
 // (scene.cpp refuses those scenes with a message first).
 std::string companion_level(const std::string& level, const std::string& correction);
 

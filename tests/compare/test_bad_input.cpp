@@ -92,6 +92,8 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
        "compare.correction_from: \"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"kinetic\""},
       {"next order of the order-3 level itself", replace(judged("\"cooling3\""), "msd = \"eq17\"", "level = \"kinetic-cooling3\""),
        "compare.correction_from: \"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"kinetic-cooling3\""},
+      {"a truncation of the converged level under another", replace(judged("\"sonine4\""), "msd = \"eq17\"", "level = \"kinetic-converged\""),
+       "compare.correction_from: \"sonine4\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"kinetic-converged\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");
