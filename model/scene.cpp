@@ -227,8 +227,9 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
-  if (s.theory.level.starts_with("kinetic-converged") && s.restitution.is_viscoelastic())
-    top.fail("theory", "level \"" + s.theory.level + "\" needs a constant restitution coefficient", "collisions.restitution = number");
+  if (s.theory.level.starts_with("kinetic-converged") && s.theory.sweep && s.restitution.is_viscoelastic())
+    top.fail("theory", "level \"" + s.theory.level + "\" settles its memory for a sweep, which needs a constant restitution coefficient",
+             "collisions.restitution = number");
   if (s.theory.msd == "closed" && !settled_start)
     top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
   if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())

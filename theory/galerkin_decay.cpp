@@ -2,9 +2,11 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <exception>
 #include <stdexcept>
+#include <string>
 
 #include "model/errors.hpp"
 
@@ -17,9 +19,7 @@ constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_dif
 }  // namespace
 
 GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size)
-    : rates_(rates), size_(size), tables_(rates.size() * rates.size()) {
-  if (rates.law().is_viscoelastic())
-    throw InputError("the converged velocity memory needs a constant restitution coefficient (allowed: collisions.restitution = number)");
+    : rates_(rates), size_(size), viscoelastic_(rates.law().is_viscoelastic()), tables_(rates.size() * rates.size()) {
   const std::size_t N = rates.size();
   for (std::size_t k = 0; k < N; ++k) {
     Species sp;
@@ -56,55 +56,70 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
   }
 }
 
-GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i, double rho) const {
+GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i, double theta_k, double rho) const {
+  // At constant ε the pair problem at θ_k = 1/2 (√(2θ_k) = 1) serves every θ_k; a viscoelastic ε(u) needs the true θ_k.
   const Species& sp = species_[k];
   const auto n = Eigen::Index(size_);
   const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   Eigen::MatrixXd G[3] = {Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
-  add_pair_collisions(rates_, k, i, 0.5, 0.5 * rho, sp.basis, weight_temperature, shapes, 3, G);  // √(2θ_k) = 1
+  const double th = viscoelastic_ ? theta_k : 0.5;
+  add_pair_collisions(rates_, k, i, th, rho * th, sp.basis, weight_temperature, shapes, 3, G);
   Sources out;
-  for (std::size_t j = 0; j < 3; ++j) out[j] = sp.Winv * G[j].transpose() * sp.W;
+  const double unscale = 1.0 / std::sqrt(2.0 * th);
+  for (std::size_t j = 0; j < 3; ++j) out[j] = unscale * (sp.Winv * G[j].transpose() * sp.W);
   return out;
-}
-
-const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, long j) const {
-  std::map<long, Sources>& table = tables_[k * rates_.size() + i];
-  auto it = table.find(j);
-  if (it == table.end()) it = table.emplace(j, pair_sources(k, i, std::exp(double(j) * pair_grid_step))).first;
-  return it->second;
 }
 
 namespace {
 
-// Where ln(θ_i/θ_k) falls on the grid: node j and the offset t ∈ [0, 1) towards j + 1.
-struct GridPoint {
-  long j;
-  double t;
+// The Catmull–Rom weights of the grid nodes around x (in grid units): nodes ⌊x⌋ − 1 … ⌊x⌋ + 2, or ⌊x⌋ alone where x is
+// a node (the own species, ρ = 1).
+struct Stencil1 {
+  long first;
+  int count;
+  double w[4];
 };
-GridPoint grid_point(double rho) {
-  if (!(rho > 0.0 && std::isfinite(rho))) throw NumericalError("converged velocity memory: temperature ratio not finite and positive");
-  const double u = std::log(rho) / pair_grid_step, jf = std::floor(u);
-  return {long(jf), u - jf};
+Stencil1 stencil1(double x, const char* what) {
+  if (!std::isfinite(x)) throw NumericalError(std::string("converged velocity memory: ") + what + " not finite and positive");
+  const double f = std::floor(x), t = x - f;
+  if (t == 0.0) return {long(f), 1, {1.0, 0.0, 0.0, 0.0}};
+  return {long(f) - 1, 4,
+          {0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t), 0.5 * (t + 4.0 * t * t - 3.0 * t * t * t),
+           0.5 * (-t * t + t * t * t)}};
 }
 
 }  // namespace
+
+std::vector<std::pair<GalerkinDecay::Node, double>> GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T) const {
+  const model::Mixture& mix = rates_.mixture();
+  const double theta_k = T[k] / mix[k].mass, rho = T[i] / mix[i].mass / theta_k;
+  const Stencil1 r = stencil1(std::log(rho) / pair_grid_step, "temperature ratio");
+  const Stencil1 h = viscoelastic_ ? stencil1(std::log(theta_k) / scale_grid_step, "temperature") : Stencil1{0, 1, {1.0, 0.0, 0.0, 0.0}};
+  std::vector<std::pair<Node, double>> out;
+  for (int a = 0; a < h.count; ++a)
+    for (int j = 0; j < r.count; ++j) out.push_back({{h.first + a, r.first + j}, h.w[a] * r.w[j]});
+  return out;
+}
+
+const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, const Node& at) const {
+  std::map<Node, Sources>& table = tables_[k * rates_.size() + i];
+  auto it = table.find(at);
+  if (it == table.end()) it = table.emplace(at, pair_sources(k, i, std::exp(double(at.first) * scale_grid_step), std::exp(double(at.second) * pair_grid_step))).first;
+  return it->second;
+}
 
 void GalerkinDecay::prefetch(const double* T) const {
   // The nodes the next assembly needs and the tables lack, computed together on OpenMP threads (each node wholly on
   // one thread: the numbers do not depend on the thread count). A history moves every pair's ratio at once, so most
   // new nodes come in batches.
-  const model::Mixture& mix = rates_.mixture();
-  const std::size_t N = mix.size();
-  std::vector<std::array<long, 3>> missing;  // k, i, j
+  const std::size_t N = rates_.size();
+  std::vector<std::pair<std::size_t, Node>> missing;  // pair k·N + i, node
   for (std::size_t k = 0; k < N; ++k) {
     if (!species_[k].diffusive) continue;
-    const double theta_k = T[k] / mix[k].mass;
-    for (std::size_t i = 0; i < N; ++i) {
-      const GridPoint g = grid_point(T[i] / mix[i].mass / theta_k);
-      const std::map<long, Sources>& table = tables_[k * N + i];
-      for (long j = g.t == 0.0 ? g.j : g.j - 1; j <= (g.t == 0.0 ? g.j : g.j + 2); ++j)
-        if (!table.count(j)) missing.push_back({long(k), long(i), j});
-    }
+    for (std::size_t i = 0; i < N; ++i)
+      for (const auto& [at, w] : stencil(k, i, T))
+        if (!tables_[k * N + i].count(at) && std::find(missing.begin(), missing.end(), std::pair(k * N + i, at)) == missing.end())
+          missing.push_back({k * N + i, at});
   }
   if (missing.empty()) return;
   std::vector<Sources> computed(missing.size());
@@ -112,42 +127,32 @@ void GalerkinDecay::prefetch(const double* T) const {
 #pragma omp parallel for schedule(dynamic, 1) if (missing.size() > 1)
   for (std::size_t m = 0; m < missing.size(); ++m) {
     try {
-      computed[m] = pair_sources(std::size_t(missing[m][0]), std::size_t(missing[m][1]), std::exp(double(missing[m][2]) * pair_grid_step));
+      const Node& at = missing[m].second;
+      computed[m] = pair_sources(missing[m].first / N, missing[m].first % N, std::exp(double(at.first) * scale_grid_step),
+                                 std::exp(double(at.second) * pair_grid_step));
     } catch (...) {
       failed[m] = std::current_exception();
     }
   }
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
-  for (std::size_t m = 0; m < missing.size(); ++m)
-    tables_[std::size_t(missing[m][0]) * N + std::size_t(missing[m][1])].emplace(missing[m][2], std::move(computed[m]));
+  for (std::size_t m = 0; m < missing.size(); ++m) tables_[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
 }
 
 void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const {
   const model::Mixture& mix = rates_.mixture();
   const double theta_k = T[k] / mix[k].mass, scale = std::sqrt(2.0 * theta_k);
   for (std::size_t i = 0; i < mix.size(); ++i) {
-    const double rho = T[i] / mix[i].mass / theta_k;
     const double w[3] = {scale, scale * (a2 ? a2[i] : 0.0), scale * (a3 ? a3[i] : 0.0)};
     if (exact) {
-      const Sources s = pair_sources(k, i, rho);
+      const Sources s = pair_sources(k, i, theta_k, T[i] / mix[i].mass / theta_k);
       for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
       continue;
     }
-    // Catmull–Rom between nodes j and j + 1; at a node (t = 0: the own species, ρ = 1) that node alone.
-    const GridPoint g = grid_point(rho);
-    const double t = g.t;
-    if (t == 0.0) {
-      const Sources& p = node(k, i, g.j);
-      for (std::size_t s = 0; s < 3; ++s) out += w[s] * p[s];
-      continue;
-    }
-    const double c[4] = {0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t),
-                         0.5 * (t + 4.0 * t * t - 3.0 * t * t * t), 0.5 * (-t * t + t * t * t)};
-    for (long m = 0; m < 4; ++m) {
-      const Sources& p = node(k, i, g.j - 1 + m);
+    for (const auto& [at, c] : stencil(k, i, T)) {
+      const Sources& p = node(k, i, at);
       for (std::size_t s = 0; s < 3; ++s)
-        if (w[s] != 0.0) out += (w[s] * c[m]) * p[s];
+        if (w[s] != 0.0) out += (w[s] * c) * p[s];
     }
   }
 }

@@ -22,13 +22,16 @@
 // threads together), and interpolated by Catmull–Rom cubics
 // (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
 // reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.
+// A viscoelastic ε(u) breaks that scaling (ε depends on the impact speed itself): its tables have a second axis, ln θ_k
+// (step scale_grid_step), and bicubic Catmull–Rom weights (16 nodes per pair and right-hand side).
 // A species whose settled problem has no decaying solution (a rare grain at the Santos–Dufty edge) keeps one mode at
-// the first-Sonine ν_k = τ_v,k⁻¹ + ξ_k/2, its other unknowns decoupled, as SonineDecay does. Constant ε only.
+// the first-Sonine ν_k = τ_v,k⁻¹ + ξ_k/2, its other unknowns decoupled, as SonineDecay does.
 #include <Eigen/Dense>
 
 #include <array>
 #include <cstddef>
 #include <map>
+#include <utility>
 #include <vector>
 
 #include "collision_rates.hpp"
@@ -40,6 +43,9 @@ namespace granmix::theory {
 // The step in ln(θ_i/θ_k) of the pair tables: interpolation error 5e-5 of the operator, 2e-6 of the MSD at settled
 // ratios (tests/theory/test_galerkin_decay.cpp).
 inline constexpr double pair_grid_step = 0.125;
+// A viscoelastic ε(u) depends on the impact speed itself, so its tables have a second axis, ln θ_k, of this step (ε
+// varies as θ^(1/10); step 1 adds ≤ 1.5e-6 to the interpolation error, tests/theory/test_galerkin_decay.cpp).
+inline constexpr double scale_grid_step = 1.0;
 
 class GalerkinDecay final : public VelocityDecay {
  public:
@@ -65,15 +71,18 @@ class GalerkinDecay final : public VelocityDecay {
     std::size_t kept = 0;
     bool diffusive = true;
   };
-  Sources pair_sources(std::size_t k, std::size_t i, double rho) const;  // assembled and transformed
-  const Sources& node(std::size_t k, std::size_t i, long j) const;
+  using Node = std::pair<long, long>;  // grid indices in ln θ_k (0 at constant ε) and ln ρ
+  Sources pair_sources(std::size_t k, std::size_t i, double theta_k, double rho) const;  // assembled, transformed, over √(2θ_k)
+  std::vector<std::pair<Node, double>> stencil(std::size_t k, std::size_t i, const double* T) const;  // nodes and weights at T
+  const Sources& node(std::size_t k, std::size_t i, const Node& at) const;
   void prefetch(const double* T) const;  // the nodes an assembly at T needs, computed in parallel
   void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
 
   const CollisionRates& rates_;
   std::size_t size_;
   std::vector<Species> species_;
-  mutable std::vector<std::map<long, Sources>> tables_;  // per ordered pair (k·N + i): grid node j ↦ Ã sources at ln ρ = j·step
+  bool viscoelastic_;
+  mutable std::vector<std::map<Node, Sources>> tables_;  // per ordered pair (k·N + i): node ↦ Ã sources over √(2θ_k)
   mutable Eigen::MatrixXd work_;
   mutable Eigen::VectorXd u_, du_;
 };

@@ -159,8 +159,8 @@ class KineticLevel final : public TheoryLevel {
 // Sweeps: D_k and the velocity memory at the kinetic level's settled state (its HCS: T_k and a₂, with cooling_order 3
 // also a₃), the MSD increments the closed form of that memory (velocity_memory.hpp). Histories: the VACF ODE with
 // the same Galerkin problem following T(t), a₂(t), a₃(t) (GalerkinDecay, galerkin_decay.hpp), from the kinetic
-// level's start. Constant ε only (model/scene.cpp refuses others); temperatures, HCS and the tracer limit are the
-// kinetic level's.
+// level's start, for constant and viscoelastic restitution (sweeps: constant only, model/scene.cpp); temperatures,
+// HCS and the tracer limit are the kinetic level's.
 // Why: at the kinetic level's own settled state the Sonine sequence D[M] of the tracer problem does not converge at
 // strong dissipation (bo1-fig05, ε = 0.2, light species: 0.820, 0.923, 0.825, 0.945 for M = 2…5) and leaves the
 // species' shape out; solved converged with it, the settled D ratios of v1 Figs. 4, 5, 7 move to within 3% of DSMC
@@ -176,12 +176,15 @@ class ConvergedLevel final : public TheoryLevel {
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     base_.configure(opt, rates);
     if (!opt.vacf) return;
-    refuse_beyond_limits(rates);
+    refuse_beyond_species_limit(rates);
     opt.decay = std::make_shared<GalerkinDecay>(rates, settled_temperatures(rates));
   }
   // At settled temperature ratios (T sets the scale): the level's steady shape and cooling rates at T.
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
-    refuse_beyond_limits(rates);
+    // The settled memory needs a settled state: a viscoelastic gas has none (its ε drifts to 1 as it cools).
+    if (rates.law().is_viscoelastic())
+      throw InputError("level " + name_ + ": its settled memory (sweeps, TAMSD) needs a constant restitution coefficient (allowed: collisions.restitution = number)");
+    refuse_beyond_species_limit(rates);
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;
@@ -244,17 +247,12 @@ class ConvergedLevel final : public TheoryLevel {
                                            TemperatureOptions& opt) const override {
     return base_.initial_temperatures(init, rates, opt);
   }
-  std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
-    if (!sonine_applies(rates)) return theory::settled_temperatures(rates).T;
-    return hcs(rates).T;
-  }
+  std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return base_.settled_temperatures(rates); }
   SonineHcs hcs(const CollisionRates& rates) const override { return base_.hcs(rates); }
   TracerLimit tracer(const CollisionRates& rates) const override { return base_.tracer(rates); }
 
  private:
-  void refuse_beyond_limits(const CollisionRates& rates) const {
-    if (rates.law().is_viscoelastic())
-      throw InputError("level " + name_ + ": needs a constant restitution coefficient (allowed: collisions.restitution = number)");
+  void refuse_beyond_species_limit(const CollisionRates& rates) const {
     // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
     // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
     if (rates.size() > converged_species_limit)

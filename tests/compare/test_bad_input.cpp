@@ -74,9 +74,7 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
       {"float where integer", replace(good, "points = 5", "points = 5.5"), ":11: time.points: expected an integer"},
       {"no observable", replace(good, "msd = true", "msd = false"), "observables"},
       {"closed form needs settled start", replace(good, "msd = \"eq17\"", "msd = \"closed\""), "theory: msd = \"closed\" holds for a settled start only"},
-      {"converged level needs constant restitution",
-       replace(replace(good, "msd = \"eq17\"", "level = \"kinetic-converged\""), "restitution = 0.5", "restitution = { viscoelastic = 0.1 }"),
-       "theory: level \"kinetic-converged\" needs a constant restitution coefficient"},
+
       {"toml syntax", replace(good, "points = 5", "points = = 5"), ":11:"},
       {"viscoelastic out of range", replace(good, "restitution = 0.5", "restitution = { viscoelastic = 50 }"),
        ":6: collisions.restitution.viscoelastic: value 50 out of range"},

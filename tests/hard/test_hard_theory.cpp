@@ -104,3 +104,24 @@ TEST_CASE("kinetic-converged: 101 species refused with the limit named (N^2 Gale
   CHECK_THROWS_WITH(make_theory_level("kinetic-converged")->diffusion_at(r, std::vector<double>(101, 1.0)),
                     Catch::Contains("101 species need 10201 Galerkin pair problems") && Catch::Contains("the limit is 100 species"));
 }
+
+TEST_CASE("kinetic-converged: a viscoelastic gas has no settled memory (refused, named), but its history is computed", "[theory][hard]") {
+  // The settled memory (sweeps, TAMSD) needs a settled state; a viscoelastic ε drifts to 1 as the gas cools.
+  const CollisionRates r = test::viscoelastic_rates(test::bo_binary(), 0.09);
+  const auto level = make_theory_level("kinetic-converged");
+  CHECK_THROWS_WITH(level->diffusion_at(r, {1.0, 1.0}), Catch::Contains("needs a constant restitution coefficient"));
+  // Along a history the tables follow ε(u) in ln θ_k: finite, and from the kinetic level's start the same ballistic MSD.
+  TemperatureOptions opt;
+  opt.vacf = true;
+  level->configure(opt, r);
+  const TemperatureHistory h(r, {1.0, 1.0}, 100.0, opt);
+  TemperatureOptions kopt;
+  kopt.vacf = true;
+  make_theory_level("kinetic")->configure(kopt, r);
+  const TemperatureHistory k(r, {1.0, 1.0}, 100.0, kopt);
+  for (std::size_t s = 0; s < 2; ++s) {
+    CHECK(h.msd_vacf(1e-3, s) == Approx(k.msd_vacf(1e-3, s)).epsilon(1e-4));
+    CHECK(std::isfinite(h.msd_vacf(100.0, s)));
+    CHECK(h.msd_vacf(100.0, s) > h.msd_vacf(10.0, s));
+  }
+}
