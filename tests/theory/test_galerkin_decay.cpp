@@ -36,23 +36,23 @@ TEST_CASE("converged memory in time: the interpolated pair tables are the direct
   }
 }
 
-TEST_CASE("converged memory in time: viscoelastic tables (ln theta_k and ln rho) are the direct assembly to 1e-3", "[theory]") {
-  // v1 Fig. 10's law on its 1:100 binary, at temperatures across the decades a history visits, off both grids; the
-  // grid in ln θ_k (step 1) carries ε(u), which varies as θ^(1/10): it adds ≤ 1.5e-6 (step 1/4: the same errors to
-  // 1e-6). The errors are ≤ 1.6e-5 except the light species at T₂/T₁ = 61.3, 5.5e-4 at every T₁: the viscoelastic pair
-  // integral is rougher in ρ there than at constant ε (1e-5 at the same ratio; cause not found). A wrong θ scaling (the
-  // tables are stored over √(2θ_k)) or a node off by one is an error of order 1e-2 to 1.
+TEST_CASE("converged memory in time: viscoelastic tables (ln theta_k and ln rho) are the direct assembly to 1e-4", "[theory]") {
+  // v1 Fig. 10's law on its 1:100 binary, at temperatures six decades apart, off both grids; the grid in ln θ_k (step 1)
+  // carries ε(u), which varies as θ^(1/10): it adds ≤ 1.5e-6. Here with 4 functions (the tables' machinery at half the
+  // cost): worst 2.2e-5. With the level's 8, measured once: ≤ 1.6e-5 except the light species at T₂/T₁ = 61.3, 5.5e-4 at
+  // every T₁ (the higher functions are rougher in ρ there; at constant ε the same ratio gives < 1e-4). A wrong θ scaling
+  // (the tables are stored over √(2θ_k)) or a node off by one is an error of order 1e-2 to 1.
   const CollisionRates r = test::viscoelastic_rates(test::bo_binary(), 0.09);
-  const GalerkinDecay decay(r, settled_temperatures(r).T);
+  const GalerkinDecay decay(r, settled_temperatures(r).T, 4);  // 4 functions: the tables' machinery at half the cost
   const double a2[2] = {0.03, -0.08}, a3[2] = {-0.01, 0.02};
   double worst = 0.0;
-  for (double T1 : {0.93, 0.037, 3.1e-4, 2.2e-7})
+  for (double T1 : {0.93, 2.2e-7})  // six decades apart (each new T₁ costs 64 table nodes: 87 s under the sanitizers with four)
     for (double ratio : {1.0, 13.7, 61.3}) {
       const std::vector<double> T = {T1, ratio * T1};
       for (std::size_t k = 0; k < 2; ++k) {
         const Eigen::MatrixXd A = decay.collision_operator(k, T.data(), a2, a3), B = decay.collision_operator_exact(k, T.data(), a2, a3);
         INFO("T1 = " << T1 << ", T2/T1 = " << ratio << ", species " << k + 1);
-        CHECK((A - B).norm() / B.norm() < 1e-3);
+        CHECK((A - B).norm() / B.norm() < 1e-4);
         worst = std::max(worst, (A - B).norm() / B.norm());
       }
     }
