@@ -2,10 +2,8 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <algorithm>
 #include <cmath>
 #include <exception>
-#include <stdexcept>
 #include <string>
 
 #include "model/errors.hpp"
@@ -118,8 +116,7 @@ void GalerkinDecay::prefetch(const double* T) const {
     if (!species_[k].diffusive) continue;
     for (std::size_t i = 0; i < N; ++i)
       for (const auto& [at, w] : stencil(k, i, T))
-        if (!tables_[k * N + i].count(at) && std::find(missing.begin(), missing.end(), std::pair(k * N + i, at)) == missing.end())
-          missing.push_back({k * N + i, at});
+        if (!tables_[k * N + i].count(at)) missing.push_back({k * N + i, at});  // a pair's stencil nodes are distinct
   }
   if (missing.empty()) return;
   std::vector<Sources> computed(missing.size());
@@ -171,8 +168,12 @@ Eigen::MatrixXd GalerkinDecay::collision_operator_exact(std::size_t k, const dou
   return out;
 }
 
+double GalerkinDecay::first_sonine_rate(std::size_t k, const double* T, const double* xi) const {
+  return 0.5 * xi[k] + rates_.inv_tau_v_species(k, T);
+}
+
 void GalerkinDecay::rates(const double* T, const double* xi, double* nu) const {
-  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = 0.5 * xi[k] + rates_.inv_tau_v_species(k, T);
+  for (std::size_t k = 0; k < rates_.size(); ++k) nu[k] = first_sonine_rate(k, T, xi);
 }
 
 void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, const double* xi, const double* Q, double* dQ, double*,
@@ -183,7 +184,7 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;
     if (!sp.diffusive) {  // no diffusive solution: first-Sonine ν_k, the other unknowns decoupled
-      const double nu1 = 0.5 * xi[k] + rates_.inv_tau_v_species(k, T);
+      const double nu1 = first_sonine_rate(k, T, xi);
       dQ[k] = 3.0 * theta - nu1 * Q[k];
       for (std::size_t p = 1; p < size_; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
       continue;

@@ -4,7 +4,8 @@
 // problem follows the temperatures T(t) and the Sonine shapes a₂(t), a₃(t) of the cooling closure, as SonineDecay
 // (sonine2_diffusion.hpp) does in the Sonine basis, whose expansion does not converge at strong dissipation.
 //
-// Forward form. g(v, t) = ⟨Δr_k δ(v − v_k(t))⟩ obeys the tracer (Boltzmann–Lorentz) equation with the source v f_k
+// Forward form (the Q_k = ⟨Δr·v⟩ form of physics-beyond.md §2 with the Galerkin closure of tracer_diffusion_galerkin
+// in place of the first Sonine's one mode). g(v, t) = ⟨Δr_k δ(v − v_k(t))⟩ obeys the tracer (Boltzmann–Lorentz) equation with the source v f_k
 // (dΔr/dt = v), and Q_k = ⟨Δr_k·v_k⟩ = ∫v·g dv. With g in the trial space f_w c Σ_q b_q B_q(c²) (f_w the Maxwellian of
 // temperature λT_k(t), c = v/√(2θ_k(t)), θ_k = T_k/m_k) and Y_n = ⟨c B_n·Δr_k⟩ = (M b)_n, the moment equations
 // are exact up to the closure g ≈ its projection:
@@ -13,7 +14,7 @@
 // (ξ_k/2)c; ξ_k = −d ln T_k/dt of the cooling closure, the rate of the same a's the operator holds). In the
 // elastic limit the steady Q is 2θ_k r·A⁻¹M e₀ = 3D_k of galerkin_diffusion: the adjoint problem's D (duality).
 // The unknowns are U = Δ H Φᵀ-coordinates of Z = √(2θ_k) Y: Φ the M-orthonormal basis (m_orthonormal_basis), H
-// the Householder reflection taking the coordinates of B₀ = 1 to the first axis, Δ = diag(|ΦᵀMe₀|, 1, …), so that
+// the Householder reflection taking y₀ = ΦᵀMe₀ (the coordinates of B₀ = 1) to α e₁, α = ∓|y₀|, Δ = diag(α, 1, …), so that
 // U₀ = Q_k (the VelocityDecay contract) and
 //   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
 // The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
@@ -76,6 +77,7 @@ class GalerkinDecay final : public VelocityDecay {
   std::vector<std::pair<Node, double>> stencil(std::size_t k, std::size_t i, const double* T) const;  // nodes and weights at T
   const Sources& node(std::size_t k, std::size_t i, const Node& at) const;
   void prefetch(const double* T) const;  // the nodes an assembly at T needs, computed in parallel
+  double first_sonine_rate(std::size_t k, const double* T, const double* xi) const;  // ν_k = τ_v,k⁻¹ + ξ_k/2
   void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
 
   const CollisionRates& rates_;

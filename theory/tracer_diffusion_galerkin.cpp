@@ -178,8 +178,6 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
   const double theta_k = T[k] / mix[k].mass;
   out.theta = theta_k;
   out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
-  out.M = out.A;
-  out.r = Eigen::VectorXd::Zero(Eigen::Index(N));
   for (std::size_t i = 0; i < mix.size(); ++i) {  // collisions with every partner i
     const PartnerShape shape{1.0, opt.a2 ? opt.a2[i] : 0.0, opt.a3 ? opt.a3[i] : 0.0};
     add_pair_collisions(rates, k, i, theta_k, T[i] / mix[i].mass, basis, lam, &shape, 1, &out.A);
