@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "model/errors.hpp"
@@ -18,15 +19,28 @@ namespace {
 // Gauss points in W (Hermite) and |v_⊥|² (Laguerre) given the impact speed, and for the averages over f_w and f_k:
 // the Sonine basis (degree ≤ 2·5 in each) is integrated exactly; the weighted basis's near-singular 1/√(c² + x₀)
 // to 5e-4 of the factor (see the header).
-constexpr std::size_t hermite_points = 60, laguerre_points = 36;
-
+// (collision_weighted_basis at large x₀ takes coarser rules: its tiers below; the averages keep the finest.)
 struct Rules {
-  GaussRule hermite = golub_welsch(hermite_points, false), laguerre = golub_welsch(laguerre_points, true);
+  GaussRule hermite, laguerre;
 };
-const Rules& rules() {
-  static const Rules r;
-  return r;
+struct Tier {
+  double x0;  // from this x₀ on
+  std::size_t hermite, laguerre;
+};
+constexpr Tier tiers[] = {{0.0, 60, 36}, {4.0, 30, 16}, {15.0, 20, 12}};
+
+// The rules of one tier's point counts, built once (thread-safe static initialisation).
+const Rules& rules(std::size_t hermite, std::size_t laguerre) {
+  static const std::vector<Rules> all = [] {
+    std::vector<Rules> r;
+    for (const Tier& t : tiers) r.push_back({golub_welsch(t.hermite, false), golub_welsch(t.laguerre, true)});
+    return r;
+  }();
+  for (std::size_t j = 0; j < std::size(tiers); ++j)
+    if (tiers[j].hermite == hermite && tiers[j].laguerre == laguerre) return all[j];
+  throw std::invalid_argument("tracer diffusion Galerkin: no pair rule of " + std::to_string(hermite) + " x " + std::to_string(laguerre) + " points");
 }
+const Rules& finest_rules() { return rules(tiers[0].hermite, tiers[0].laguerre); }
 
 constexpr std::size_t max_basis = 16;
 
@@ -69,6 +83,9 @@ RadialBasis sonine_radial_basis(std::size_t modes) {
 RadialBasis collision_weighted_basis(std::size_t size, double x0) {
   if (size < 2 || size > max_basis) throw std::invalid_argument("collision_weighted_basis: 2 to 16 functions");
   if (!(x0 >= 0.0 && std::isfinite(x0))) throw std::invalid_argument("collision_weighted_basis: x0 must be finite and >= 0");
+  const Tier* tier = tiers;
+  for (const Tier& t : tiers)
+    if (x0 >= t.x0) tier = &t;
   return {size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
             for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
             double* L = B + count;  // rows 1…: L_{m−1}, then scaled by r = (x + x₀)^(−1/2)
@@ -84,7 +101,8 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
             }
             for (std::size_t m = 1; m < size; ++m)
               for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
-          }};
+          },
+          tier->hermite, tier->laguerre};
 }
 
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
@@ -93,7 +111,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
   if (weight == 0.0) return;
   const std::size_t N = basis.size;
-  const Rules& g = rules();
+  const Rules& g = rules(basis.hermite_points, basis.laguerre_points);
   const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule() : constant_eps_speed_rule();
   const double lam = weight_temperature, theta_w = lam * theta_k, inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   const double mu = mix[i].mass / (mix[i].mass + mix[k].mass);
@@ -142,7 +160,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
 }
 
 GalerkinAverages galerkin_averages(const RadialBasis& basis, double weight_temperature) {
-  const Rules& g = rules();
+  const Rules& g = finest_rules();
   const double lam = weight_temperature;
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
   const auto n_rows = static_cast<Eigen::Index>(basis.size), n_cols = static_cast<Eigen::Index>(P);

@@ -47,9 +47,18 @@ namespace granmix::theory {
 struct RadialBasis {
   std::size_t size = 0;
   std::function<void(const double* x, std::size_t count, double* B, double* xdB)> eval;
+  // The W × |v_⊥|² rule of its pair integrals (add_pair_collisions): 60 × 36 points unless the basis is smooth on the
+  // scale of the velocities that meet (collision_weighted_basis at large x₀).
+  std::size_t hermite_points = 60, laguerre_points = 36;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
-RadialBasis collision_weighted_basis(std::size_t size, double x0);  // 1, then L_{m−1}^(3/2)(x)/√(x + x₀)
+// 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
+// x₀ is small, the light species): 60 × 36 below x₀ = 4, 30 × 16 from 4, 20 × 12 from 15. Each pair source within
+// 1.6e-5 of its largest entry of the 60 × 36 rule's (tests/theory/test_tracer_diffusion_galerkin.cpp); in the
+// history tables' own coordinates (galerkin_decay.hpp) ≤ 1.5e-4 against 120 × 72 over ρ within e^(±4) of the start
+// (x₀ = 4.3–121, scenes and binaries measured 2026-12-03), where 60 × 36 itself errs by 1e-3–3e-2 for the light
+// species (x₀ = 0.01–0.7). Cost: 1/4.5 resp. 1/9 of the finest rule's.
+RadialBasis collision_weighted_basis(std::size_t size, double x0);
 
 struct GalerkinOptions {
   double weight_temperature = 2.0;                          // λ of the test weight

@@ -4,8 +4,10 @@
 // ballistic start, its integral D); and the kinetic-converged level at settled ratios.
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <numbers>
 #include <vector>
 
@@ -152,5 +154,49 @@ TEST_CASE("tracer Galerkin: the weighted basis is nested - the problem in 7 func
     CHECK((block.A - small.A).norm() <= 1e-12 * small.A.norm());
     CHECK((block.M - small.M).norm() <= 1e-12 * small.M.norm());
     CHECK(galerkin_diffusion(block) == Approx(galerkin_diffusion(small)).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x0 >= 4, >= 15) are the 60 x 36 rule's to 5e-5", "[theory]") {
+  // collision_weighted_basis picks its W × |v_⊥|² rule by x₀ (30 × 16 from 4, 20 × 12 from 15). Checked on the heavy
+  // species of 1:12 and 1:200 binaries (same material, ε = 0.5; its own x₀ at equal temperatures 4.3 and 23) as the
+  // pair tables of the histories hold it: each partner and each partner-shape source (Maxwellian, a₂, a₃) alone, in
+  // M-orthonormal coordinates, the partner as hot as at the start and e^(±4) times hotter, against the same basis at
+  // 60 × 36 (converged there to ~1e-8 for these x₀). Measured: 4.7e-6 and 1.6e-5 of the node's largest entry; a tier
+  // one step too coarse (20 × 12 at x₀ = 4.3: 3.9e-4) fails.
+  CHECK(collision_weighted_basis(8, 3.99).hermite_points == 60);
+  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  for (double m : {12.0, 200.0}) {
+    const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {m, std::cbrt(m), 0.1}}, 0.5);
+    const std::vector<double> T0 = {1.0, 1.0};
+    const double x0 = converged_basis_x0(r, 1, T0.data());
+    const RadialBasis coarse = collision_weighted_basis(8, x0);
+    CHECK(coarse.hermite_points == (m < 50.0 ? 30 : 20));
+    RadialBasis fine = coarse, coarser = coarse;
+    fine.hermite_points = 60, fine.laguerre_points = 36;
+    coarser.hermite_points = 20, coarser.laguerre_points = 12;
+    const Eigen::MatrixXd Phi = m_orthonormal_basis(galerkin_averages(coarse, 2.0).M);
+    auto sources = [&](const RadialBasis& b, std::size_t i, double rho) {
+      std::array<Eigen::MatrixXd, 3> G;
+      for (auto& g : G) g = Eigen::MatrixXd::Zero(8, 8);
+      add_pair_collisions(r, 1, i, 0.5, 0.5 * rho, b, 2.0, shapes, 3, G.data());
+      for (auto& g : G) g = Phi.transpose() * g * Phi;
+      return G;
+    };
+    double err = 0.0, err_coarser = 0.0;
+    for (std::size_t i = 0; i < 2; ++i)
+      for (double f : {std::exp(-4.0), 1.0, std::exp(4.0)}) {
+        const double rho = f * (i == 0 ? m : 1.0);  // θ_i/θ_k at equal temperatures, times f
+        const auto A = sources(coarse, i, rho), B = sources(fine, i, rho), C = sources(coarser, i, rho);
+        double scale = 0.0;
+        for (const auto& b : B) scale = std::max(scale, b.cwiseAbs().maxCoeff());
+        for (std::size_t j = 0; j < 3; ++j) {
+          err = std::max(err, (A[j] - B[j]).cwiseAbs().maxCoeff() / scale);
+          err_coarser = std::max(err_coarser, (C[j] - B[j]).cwiseAbs().maxCoeff() / scale);
+        }
+      }
+    std::printf("pair rule at x0 = %.2f: %.1e of the largest entry (20 x 12: %.1e)\n", x0, err, err_coarser);
+    INFO("m = " << m << ", x0 = " << x0);
+    CHECK(err < 5e-5);
   }
 }
