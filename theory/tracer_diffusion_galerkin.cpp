@@ -91,9 +91,11 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
             double* L = B + count;  // rows 1…: L_{m−1}, then scaled by r = (x + x₀)^(−1/2)
             laguerre_rows(x, count, size - 1, L);
             thread_local std::vector<double> r, h;  // reused: fresh ones cost page faults at every call
-            r.resize(count), h.resize(count);
-            for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0), h[p] = -0.5 * x[p] / (x[p] + x0);  // h = x d ln r/dx
+            r.resize(count);
+            for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0);
             if (xdB) {
+              h.resize(count);
+              for (std::size_t p = 0; p < count; ++p) h[p] = -0.5 * x[p] / (x[p] + x0);  // h = x d ln r/dx
               for (std::size_t p = 0; p < count; ++p) xdB[p] = 0.0;
               for (std::size_t m = 1; m < size; ++m) x_derivative_row(L, count, m - 1, h.data(), xdB + m * count);
               for (std::size_t m = 1; m < size; ++m)
@@ -124,10 +126,12 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
   const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
-  thread_local Rows B, B1, loss, shaped_loss;  // reused across calls (fresh ones cost page faults)
+  thread_local Rows B, B1, loss;  // reused across calls (fresh ones cost page faults)
+  thread_local Eigen::MatrixXd partial;
   thread_local Eigen::VectorXd x, x1, wx, wcc, y;
   for (Rows* m : {&B, &B1, &loss}) m->resize(n_rows, n_cols);
-  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc, &y}) v->resize(n_cols);
+  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc}) v->resize(n_cols);
+  y.resize(Eigen::Index(g.hermite.x.size()));
   // The f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp), the partner's shape as
   // E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
   for (std::size_t n = 0; n < speed.x.size(); ++n) {
@@ -136,25 +140,27 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     Eigen::Index p = 0;
     for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
       const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
-      const double ciz2 = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
+      y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
       for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
         const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
         x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
-        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k), y[p] = ciz2;  // w c², w c·c′
+        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
       }
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
-    for (std::size_t j = 0; j < count; ++j) {
-      if (!shaped) {
-        out[j].noalias() += B * loss.transpose();
-        continue;
-      }
-      const PartnerShape& c = shapes[j];
-      shaped_loss.resize(n_rows, n_cols);
-      for (Eigen::Index q = 0; q < n_cols; ++q)
-        shaped_loss.col(q) = loss.col(q) * (c.one + c.a2 * sonine_axial_S2(y[q]) + c.a3 * sonine_axial_S3(y[q]));
-      out[j].noalias() += B * shaped_loss.transpose();
+    if (!shaped) {
+      for (std::size_t j = 0; j < count; ++j) out[j].noalias() += B * loss.transpose();
+      continue;
+    }
+    // The shape factor depends on W alone (c_iz), so the sum over |v_⊥|² is done once per W — one product's work for
+    // every shape together — and each shape weights those partial sums.
+    const auto L = static_cast<Eigen::Index>(g.laguerre.x.size());
+    for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
+      const Eigen::Index first = Eigen::Index(h) * L;
+      partial.noalias() = B.middleCols(first, L).lazyProduct(loss.middleCols(first, L).transpose());
+      const double S2 = sonine_axial_S2(y[Eigen::Index(h)]), S3 = sonine_axial_S3(y[Eigen::Index(h)]);
+      for (std::size_t j = 0; j < count; ++j) out[j] += (shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3) * partial;
     }
   }
 }
