@@ -223,8 +223,8 @@ StudyResult theory_study(const StudyOptions& o) {
   if (!o.quick) out.json.push_back(fmt::format("{{\"case\": \"5000 species T + VACF MSD to 1e12\", \"seconds\": {:.6g}}}", s5000v));
   out.json.push_back(fmt::format("{{\"case\": \"gamma(alpha) 100 points\", \"seconds\": {:.6g}}}", sg));
 
-  // The two levels scene by scene (the scenes of the scene folder at a kinetic level, each at its own — kinetic or
-  // kinetic-cooling3 — against the paper level; --quick: the first three).
+  // The two levels scene by scene (the scenes of the scene folder at a kinetic level, each at its own — kinetic,
+  // kinetic-converged or kinetic-converged-cooling3 — against the paper level; --quick: the first three).
   std::vector<std::filesystem::path> files;
   if (!o.scenes_folder.empty() && std::filesystem::is_directory(o.scenes_folder))
     for (const auto& e : std::filesystem::directory_iterator(o.scenes_folder))
