@@ -149,8 +149,9 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
-    if (!shaped) {
-      for (std::size_t j = 0; j < count; ++j) out[j].noalias() += B * loss.transpose();
+    if (!shaped) {  // every shape Maxwellian: one product
+      partial.noalias() = B * loss.transpose();
+      for (std::size_t j = 0; j < count; ++j) out[j] += partial;
       continue;
     }
     // The shape factor depends on W alone (c_iz), so the sum over |v_⊥|² is done once per W — one product's work for

@@ -39,9 +39,10 @@ TEST_CASE("converged memory in time: the interpolated pair tables are the direct
 TEST_CASE("converged memory in time: viscoelastic tables (ln theta_k and ln rho) are the direct assembly to 1e-4", "[theory]") {
   // v1 Fig. 10's law on its 1:100 binary, at temperatures six decades apart, off both grids; the grid in ln θ_k (step 2)
   // carries ε(u), which varies as θ^(1/10) (at step 1 it added ≤ 1.5e-6). Here with 4 functions (the tables' machinery
-  // at half the cost): worst 2.0e-5 (2.2e-5 at step 1). With the level's 8, measured once: ≤ 1.6e-5 except the light species at T₂/T₁ = 61.3, 5.5e-4 at
-  // every T₁ (the higher functions are rougher in ρ there; at constant ε the same ratio gives < 1e-4). A wrong θ scaling
-  // (the tables are stored over √(2θ_k)) or a node off by one is an error of order 1e-2 to 1.
+  // at half the cost): worst 2.0e-5 (2.2e-5 at step 1). With the level's 8, measured once (step 1): ≤ 1.6e-5 except
+  // the light species at T₂/T₁ = 61.3, 5.5e-4 at every T₁ (the higher functions are rougher in ρ there; at constant ε
+  // the same ratio gives < 1e-4). A wrong θ scaling (the tables are stored over √(2θ_k)) or a node off by one is an
+  // error of order 1e-2 to 1.
   const CollisionRates r = test::viscoelastic_rates(test::bo_binary(), 0.09);
   const GalerkinDecay decay(r, settled_temperatures(r).T, 4);  // 4 functions: the tables' machinery at half the cost
   const double a2[2] = {0.03, -0.08}, a3[2] = {-0.01, 0.02};
