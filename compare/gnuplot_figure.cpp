@@ -53,6 +53,9 @@ std::vector<std::string> species_plots(const model::PlotSettings& p, const model
   plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}')) with linespoints ls 1 pt 6 ps 0.5 "
                               "title 'theory, t = {:g}'",
                               last_block_start(theory), p.y, theory.rows.back()[0]));
+  if (theory.column(p.y + "_paper") >= 0)  // the paper level dashed beside the judged level, as the time plots draw it
+    plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}_paper')) with lines ls 1 dt 2 title 'paper'",
+                                last_block_start(theory), p.y));
   if (dsmc && dsmc->column(p.y + "_err") >= 0)
     plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):{} with yerrorbars "
                                 "ls 2 pt 7 ps 0.6 title 'DSMC'",

@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
+#include "theory/galerkin_decay.hpp"
 #include "gnuplot_figure.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
@@ -81,12 +82,13 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
   try {
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
-    const theory::TheoryResult th = theory::run_theory(s);
+    const auto tables = std::make_shared<theory::GalerkinPairTables>();  // the converged levels' pair tables, built once
+    const theory::TheoryResult th = theory::run_theory(s, tables);
     o.theory_seconds = th.seconds;
-    {  // error estimate: the same scene at 100× tighter tolerance (design: speed against error)
+    {  // error estimate: the same scene at 100× tighter tolerance (design: speed against error), on the same tables
       model::Scene tight = s;
       tight.theory.rtol = std::max(1e-14, s.theory.rtol / 100.0);
-      o.theory_error = max_relative_difference(th.table, theory::run_theory(tight).table);
+      o.theory_error = max_relative_difference(th.table, theory::run_theory(tight, tables).table);
     }
     write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), th.table));
     const model::Table* dsmc_table = nullptr;

@@ -16,9 +16,13 @@ constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_dif
 
 }  // namespace
 
-GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size)
-    : rates_(rates), size_(size), viscoelastic_(rates.law().is_viscoelastic()), tables_(rates.size() * rates.size()) {
+GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size,
+                             std::shared_ptr<GalerkinPairTables> tables)
+    : rates_(rates), size_(size), viscoelastic_(rates.law().is_viscoelastic()) {
   const std::size_t N = rates.size();
+  const bool compatible = tables && (tables->pairs.empty() || (tables->T_ref == T_ref && tables->size == size));
+  tables_ = compatible ? std::move(tables) : std::make_shared<GalerkinPairTables>();
+  if (tables_->pairs.empty()) tables_->T_ref = T_ref, tables_->size = size, tables_->pairs.resize(N * N);
   for (std::size_t k = 0; k < N; ++k) {
     Species sp;
     sp.basis = collision_weighted_basis(size, converged_basis_x0(rates, k, T_ref.data()));
@@ -100,7 +104,7 @@ std::vector<std::pair<GalerkinDecay::Node, double>> GalerkinDecay::stencil(std::
 }
 
 const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, const Node& at) const {
-  std::map<Node, Sources>& table = tables_[k * rates_.size() + i];
+  std::map<Node, Sources>& table = tables_->pairs[k * rates_.size() + i];
   auto it = table.find(at);
   if (it == table.end()) it = table.emplace(at, pair_sources(k, i, std::exp(double(at.first) * scale_grid_step), std::exp(double(at.second) * pair_grid_step))).first;
   return it->second;
@@ -116,7 +120,7 @@ void GalerkinDecay::prefetch(const double* T) const {
     if (!species_[k].diffusive) continue;
     for (std::size_t i = 0; i < N; ++i)
       for (const auto& [at, w] : stencil(k, i, T))
-        if (!tables_[k * N + i].count(at)) missing.push_back({k * N + i, at});  // a pair's stencil nodes are distinct
+        if (!tables_->pairs[k * N + i].count(at)) missing.push_back({k * N + i, at});  // a pair's stencil nodes are distinct
   }
   if (missing.empty()) return;
   std::vector<Sources> computed(missing.size());
@@ -133,7 +137,7 @@ void GalerkinDecay::prefetch(const double* T) const {
   }
   for (const std::exception_ptr& e : failed)
     if (e) std::rethrow_exception(e);
-  for (std::size_t m = 0; m < missing.size(); ++m) tables_[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
+  for (std::size_t m = 0; m < missing.size(); ++m) tables_->pairs[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
 }
 
 void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const {

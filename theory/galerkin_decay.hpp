@@ -32,6 +32,7 @@
 #include <array>
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -49,10 +50,25 @@ inline constexpr double pair_grid_step = 0.125;
 // v1 Figs. 9/10 move ≤ 3e-6 from step 1, with 3/4 of the nodes: 219/612 against 289/787).
 inline constexpr double scale_grid_step = 2.0;
 
+// The pair tables of GalerkinDecay, kept apart from it so that the levels of one scene that solve the same Galerkin
+// problem (the judged kinetic-converged-cooling3 and its `converged` companion, kinetic-converged: the same mixture and
+// restitution, the same basis) build them once (scene_theory.cpp; v1 Fig. 8: ~3/4 of each converged level's time is
+// its tables). The tables depend on the mixture, the restitution law and the basis, the basis on T_ref and the size:
+// a store serves the decays of one scene built with one T_ref and size (any other gets tables of its own).
+struct GalerkinPairTables {
+  using Node = std::pair<long, long>;              // grid indices in ln θ_k (0 at constant ε) and ln ρ
+  using Sources = std::array<Eigen::MatrixXd, 3>;  // Ã of G⁰, G², G³, over √(2θ_k)
+  std::vector<double> T_ref;
+  std::size_t size = 0;
+  std::vector<std::map<Node, Sources>> pairs;  // per ordered pair (k·N + i): node ↦ sources
+};
+
 class GalerkinDecay final : public VelocityDecay {
  public:
-  // T_ref: the temperatures that fix each species' basis (x₀) and whether it is diffusive.
-  GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size = converged_diffusion_basis);
+  // T_ref: the temperatures that fix each species' basis (x₀) and whether it is diffusive. tables: a store shared with
+  // other decays of the same scene (null, or one built for another T_ref or size: tables of its own).
+  GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size = converged_diffusion_basis,
+                std::shared_ptr<GalerkinPairTables> tables = nullptr);
   void rates(const double* T, const double* xi, double* nu) const override;  // the first-Sonine ν_k
   std::size_t modes() const override { return size_; }
   bool uses_sonine_coefficients() const override { return true; }
@@ -64,7 +80,7 @@ class GalerkinDecay final : public VelocityDecay {
   Eigen::MatrixXd collision_operator_exact(std::size_t k, const double* T, const double* a2, const double* a3) const;
 
  private:
-  using Sources = std::array<Eigen::MatrixXd, 3>;  // Ã of G⁰, G², G³
+  using Sources = GalerkinPairTables::Sources;
   struct Species {
     RadialBasis basis;
     Eigen::MatrixXd W, Winv;  // coordinates: Ã = Winv·Xᵀ·W for an assembled X; W = ΦHΔ⁻¹, Winv = ΔHΦᵀ
@@ -73,7 +89,7 @@ class GalerkinDecay final : public VelocityDecay {
     std::size_t kept = 0;
     bool diffusive = true;
   };
-  using Node = std::pair<long, long>;  // grid indices in ln θ_k (0 at constant ε) and ln ρ
+  using Node = GalerkinPairTables::Node;
   Sources pair_sources(std::size_t k, std::size_t i, double theta_k, double rho) const;  // assembled, transformed, over √(2θ_k)
   std::vector<std::pair<Node, double>> stencil(std::size_t k, std::size_t i, const double* T) const;  // nodes and weights at T
   const Sources& node(std::size_t k, std::size_t i, const Node& at) const;
@@ -85,7 +101,7 @@ class GalerkinDecay final : public VelocityDecay {
   std::size_t size_;
   std::vector<Species> species_;
   bool viscoelastic_;
-  mutable std::vector<std::map<Node, Sources>> tables_;  // per ordered pair (k·N + i): node ↦ Ã sources over √(2θ_k)
+  std::shared_ptr<GalerkinPairTables> tables_;  // filled as the history reaches new nodes (node, prefetch)
   mutable Eigen::MatrixXd work_;
   mutable Eigen::VectorXd u_, du_;
 };

@@ -2,9 +2,11 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <cmath>
 
 #include "diffusion.hpp"
+#include "galerkin_decay.hpp"
 #include "theory_level.hpp"
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
@@ -34,7 +36,8 @@ struct Sample {
   std::vector<double> T, msd, D_ratio, tamsd;
 };
 
-std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats);
+std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats,
+                                    std::shared_ptr<GalerkinPairTables> tables = nullptr);
 
 // The theory's prediction of what the DSMC measures along a sweep (dsmc.at): D_k/D_1 as the ratio of
 // MSD increments between the first and the last [time] sample, from the same settled start, computed
@@ -172,7 +175,8 @@ std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& 
   return out;
 }
 
-std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats) {
+std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level, SolverStats& stats,
+                                    std::shared_ptr<GalerkinPairTables> tables) {
   const auto& o = s.observables;
   const MsdMethod method = level.msd_method(s);
   TemperatureOptions opt;
@@ -182,6 +186,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   opt.reduced_time = o.rescaled_time || (msd && method == MsdMethod::eq17);
   opt.diffusion_integral = msd && method == MsdMethod::longtime;
   opt.vacf = msd && method == MsdMethod::vacf;
+  opt.galerkin_tables = std::move(tables);
   level.configure(opt, rates);
   const std::vector<double> T0 = level.initial_temperatures(s.initial, rates, opt);
   const TemperatureHistory h(rates, T0, s.times.back(), opt);
@@ -246,12 +251,13 @@ CollisionRates scene_rates(const model::Scene& s, const model::Mixture& mix, con
 
 namespace {
 
-// Every curve of a scene at one level, in natural time units.
-Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& stats) {
+// Every curve of a scene at one level, in natural time units. tables: the Galerkin pair tables shared with the scene's
+// other levels (null: none shared).
+Table level_table(const model::Scene& s, const TheoryLevel& level, SolverStats& stats, std::shared_ptr<GalerkinPairTables> tables = nullptr) {
   if (s.theory.sweep) return sweep_table(s, level);
   if (s.observables.distribution_settled) return distribution_table(s, level);
   const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
-  return time_table(s, s.theory.tracer ? tracer_samples(s, rates, level) : history_samples(s, rates, level, stats));
+  return time_table(s, s.theory.tracer ? tracer_samples(s, rates, level) : history_samples(s, rates, level, stats, std::move(tables)));
 }
 
 // Appends the value columns of a lower level's table (same rows) as `<column>_<suffix>`.
@@ -291,14 +297,16 @@ TheoryResult run_level(const model::Scene& scene, const std::string& level) {
   return r;
 }
 
-TheoryResult run_theory(const model::Scene& scene) {
+TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairTables> tables) {
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;
   const double unit = scene_time_unit(scene);
   const model::Scene scaled = in_natural_units(scene, unit);
   const model::Scene& s = scaled;
   const auto level = make_theory_level(s.theory.level);
-  r.table = level_table(s, *level, r.stats);
+  // The judged level and a companion that solve the same Galerkin problem build its pair tables once.
+  if (!tables) tables = std::make_shared<GalerkinPairTables>();
+  r.table = level_table(s, *level, r.stats, tables);
   if (s.theory.level != "paper") {  // the papers' curves beside the judged level's
     SolverStats paper_stats;
     append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
@@ -306,7 +314,8 @@ TheoryResult run_theory(const model::Scene& scene) {
   for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4"})  // the other levels a model error is measured from
     if (corrected_from(s, correction)) {
       SolverStats companion_stats;
-      append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats), correction);
+      append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats, tables),
+                           correction);
     }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,6 +2,7 @@
 // The theory curves a scene asks for, and nothing else (design.md §1: "model only what a scene
 // needs"): temperatures, MSD, t_s, D_k/D_1, γ, TAMSD along the time grid, or settled D_k/D_1
 // along a parameter sweep.
+#include <memory>
 #include <string>
 
 #include "model/scene.hpp"
@@ -16,7 +17,9 @@ struct TheoryResult {
   double seconds = 0.0;  // wall time of the whole theory evaluation
 };
 
-TheoryResult run_theory(const model::Scene& scene);
+// tables: the Galerkin pair tables its levels share (null: a store of its own); a caller that runs the same scene
+// again (compare's error estimate at 100× tighter rtol) passes the same store, so the tables are built once.
+TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairTables> tables = nullptr);
 // One level's curves alone (level: paper, kinetic, kinetic-sonineN; no companion columns), timed:
 // `granmix bench theory` compares the levels' cost scene by scene.
 TheoryResult run_level(const model::Scene& scene, const std::string& level);

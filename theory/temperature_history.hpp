@@ -29,6 +29,8 @@
 
 namespace granmix::theory {
 
+struct GalerkinPairTables;  // galerkin_decay.hpp
+
 // Above this many unknowns (ln T_k, companions) the automatic solver switches from dense LU to GMRES.
 inline constexpr std::size_t dense_unknowns_max = 256;
 
@@ -44,6 +46,8 @@ struct TemperatureOptions {
   // Closures (cooling_model.hpp); null: MaxwellClosures of the rates (the paper level).
   std::shared_ptr<const CoolingModel> cooling;
   std::shared_ptr<const VelocityDecay> decay;
+  // The Galerkin pair tables the converged levels of one scene share (scene_theory.cpp run_theory; null: a level's own).
+  std::shared_ptr<GalerkinPairTables> galerkin_tables;
 };
 
 struct SolverStats {

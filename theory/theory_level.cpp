@@ -177,7 +177,11 @@ class ConvergedLevel final : public TheoryLevel {
     base_.configure(opt, rates);
     if (!opt.vacf) return;
     refuse_beyond_species_limit(rates);
-    opt.decay = std::make_shared<GalerkinDecay>(rates, settled_temperatures(rates));
+    // The basis (x₀) from the Maxwellian settled temperatures, the same for both converged levels, so that the judged
+    // level and its `converged` companion share their pair tables (opt.galerkin_tables). The basis is a numerical
+    // choice: each level's own settled temperatures (before 2026-12-03) give MSDs within 9.4e-5 (bo1-fig03-aged), v1
+    // Fig. 8's near-critical k = 40–43 within 1.7e-3 (its basis sensitivity: ~1% across 6–9 functions, README).
+    opt.decay = std::make_shared<GalerkinDecay>(rates, theory::settled_temperatures(rates).T, converged_diffusion_basis, opt.galerkin_tables);
   }
   // At settled temperature ratios (T sets the scale): the level's steady shape and cooling rates at T.
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <vector>
 
 #include "theory/galerkin_decay.hpp"
@@ -33,6 +34,32 @@ TEST_CASE("converged memory in time: the interpolated pair tables are the direct
       INFO("T2/T1 = " << ratio << ", species " << k + 1);
       CHECK((A - B).norm() / B.norm() < 1e-4);
     }
+  }
+}
+
+TEST_CASE("converged memory in time: decays of one scene share their pair tables, others keep their own", "[theory]") {
+  // The judged level and its `converged` companion hand one store to their decays (scene_theory.cpp): the second
+  // decay finds the first one's nodes and computes none again; its operator is the unshared decay's exactly. A decay
+  // built on other reference temperatures (another basis) must not read them: it gets tables of its own.
+  const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
+  const std::vector<double> Tref = settled_temperatures(r).T;
+  const auto store = std::make_shared<GalerkinPairTables>();
+  const GalerkinDecay first(r, Tref, converged_diffusion_basis, store);
+  const std::size_t nodes = store->pairs[0].size() + store->pairs[1].size() + store->pairs[2].size() + store->pairs[3].size();
+  CHECK(nodes > 0);
+  const GalerkinDecay second(r, Tref, converged_diffusion_basis, store), alone(r, Tref);
+  CHECK(store->pairs[0].size() + store->pairs[1].size() + store->pairs[2].size() + store->pairs[3].size() == nodes);
+  const std::vector<double> T = {1.0, 23.9};
+  const double a2[2] = {0.03, -0.08}, a3[2] = {-0.01, 0.02};
+  for (std::size_t k = 0; k < 2; ++k) CHECK((second.collision_operator(k, T.data(), a2, a3) - alone.collision_operator(k, T.data(), a2, a3)).norm() == 0.0);
+  // Another basis: 10% hotter reference temperatures move x₀, and with it every table entry.
+  const std::vector<double> hotter = {1.1 * Tref[0], Tref[1]};
+  const GalerkinDecay other(r, hotter, converged_diffusion_basis, store), other_alone(r, hotter);
+  CHECK(store->T_ref == Tref);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const Eigen::MatrixXd A = other.collision_operator(k, T.data(), a2, a3), B = other_alone.collision_operator(k, T.data(), a2, a3);
+    CHECK((A - B).norm() == 0.0);
+    CHECK((A - alone.collision_operator(k, T.data(), a2, a3)).norm() > 1e-6 * B.norm());  // the bases do differ
   }
 }
 
