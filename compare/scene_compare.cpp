@@ -8,10 +8,10 @@
 
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
-#include "theory/galerkin_decay.hpp"
 #include "gnuplot_figure.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
+#include "theory/galerkin_decay.hpp"
 #include "theory/scene_theory.hpp"
 #include "interrupts.hpp"
 #include "tsv_writer.hpp"
