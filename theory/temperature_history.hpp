@@ -47,6 +47,7 @@ struct TemperatureOptions {
   std::shared_ptr<const CoolingModel> cooling;
   std::shared_ptr<const VelocityDecay> decay;
   // The Galerkin pair tables the converged levels of one scene share (scene_theory.cpp run_theory; null: a level's own).
+  // Read by the level's configure, which builds `decay` on them; the integration itself does not use it.
   std::shared_ptr<GalerkinPairTables> galerkin_tables;
 };
 
