@@ -39,8 +39,8 @@ std::function<int()> add_theory_command(CLI::App& app) {
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
     const std::filesystem::path file = std::filesystem::path(*out) / s.name / (level->empty() ? "theory.tsv" : "theory_" + *level + ".tsv");
     write_atomically(file, format_tsv(provenance_header(p), r.table));
-    std::printf("%s: %zu rows -> %s  (%.3f s; CVODE %ld steps, %ld RHS evaluations)\n", s.name.c_str(),
-                r.table.rows.size(), file.c_str(), r.seconds, r.stats.steps, r.stats.rhs_evals);
+    std::printf("%s: %zu rows -> %s  (%.3f s; CVODE %ld steps, %ld RHS evaluations, %ld linear iterations)\n",
+                s.name.c_str(), r.table.rows.size(), file.c_str(), r.seconds, r.stats.steps, r.stats.rhs_evals, r.stats.linear_iterations);
     return 0;
   };
 }

@@ -108,7 +108,7 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
 }
 
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
-                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out) {
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out, TestForm form) {
   const model::Mixture& mix = rates.mixture();
   const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
   if (weight == 0.0) return;
@@ -122,7 +122,8 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   bool shaped = false;  // a Maxwellian partner alone: no shape factors to evaluate
   for (std::size_t j = 0; j < count; ++j) shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
-  // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
+  // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)]
+  // (the density form: L_p = w_p [B(c_p²) − B(c_p′²)]).
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
   const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
@@ -144,7 +145,10 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
         const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
         x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
-        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
+        if (form == TestForm::current)
+          wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
+        else
+          wx[p] = w, wcc[p] = w;  // the scalar B_m(c²) − B_m(c′²)
       }
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);

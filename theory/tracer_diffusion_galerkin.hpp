@@ -73,9 +73,13 @@ struct PartnerShape {
   double one = 1.0, a2 = 0.0, a3 = 0.0;
 };
 // the collisions of species k (its tracer at θ_k = T_k/m_k) with partner i at θ_i, for each of `count` partner shapes:
-// out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k);
+// out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k) — the
+// current form of the diffusion problem; with TestForm::density the scalar ⟨B_n (−L†_i) B_m⟩_w of the tracer's own
+// distribution (tracer_temperature_galerkin.hpp).
+enum class TestForm { current, density };
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
-                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out);
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out,
+                         TestForm form = TestForm::current);
 // the averages that do not depend on the state: M, the scaling matrix S_nm = ⟨c² B_n (B_m + 2c² B_m′)⟩_w (A gets
 // −(ζ/2)S) and r = r[0] + a_k2 r[1] + a_k3 r[2] over f_k.
 struct GalerkinAverages {
