@@ -17,12 +17,13 @@ constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_dif
 }  // namespace
 
 GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size,
-                             std::shared_ptr<GalerkinPairTables> tables)
+                             std::shared_ptr<GalerkinPairTables> tables, double coarse_share)
     : rates_(rates), size_(size), viscoelastic_(rates.law().is_viscoelastic()) {
   const std::size_t N = rates.size();
-  const bool compatible = tables && (tables->pairs.empty() || (tables->T_ref == T_ref && tables->size == size));
+  const bool compatible =
+      tables && (tables->pairs.empty() || (tables->T_ref == T_ref && tables->size == size && tables->coarse_share == coarse_share));
   tables_ = compatible ? std::move(tables) : std::make_shared<GalerkinPairTables>();
-  if (tables_->pairs.empty()) tables_->T_ref = T_ref, tables_->size = size, tables_->pairs.resize(N * N);
+  if (tables_->pairs.empty()) tables_->T_ref = T_ref, tables_->size = size, tables_->coarse_share = coarse_share, tables_->pairs.resize(N * N);
   for (std::size_t k = 0; k < N; ++k) {
     Species sp;
     sp.basis = collision_weighted_basis(size, converged_basis_x0(rates, k, T_ref.data()));
@@ -43,6 +44,19 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
     sp.S = sp.Winv * avg.S.transpose() * sp.W;
     for (int j = 0; j < 3; ++j) sp.s[std::size_t(j)] = sp.Winv * avg.r[j];
     species_.push_back(std::move(sp));
+  }
+  // Each partner's share of species k's collisions at the reference state: the rare ones get the coarse pair rule.
+  const model::Mixture& mix = rates.mixture();
+  coarse_.assign(N * N, false);
+  for (std::size_t k = 0; k < N; ++k) {
+    std::vector<double> share(N);
+    double sum = 0.0;
+    for (std::size_t i = 0; i < N; ++i) {
+      const double s = mix.sigma(k, i);
+      sum += share[i] = mix[i].density * s * s * rates.chi(k, i) * std::sqrt(T_ref[k] / mix[k].mass + T_ref[i] / mix[i].mass) *
+                        mix[i].mass / (mix[i].mass + mix[k].mass);
+    }
+    for (std::size_t i = 0; i < N; ++i) coarse_[k * N + i] = share[i] < coarse_share * sum;
   }
   // Diffusive at the reference state (Maxwellian partners, ζ = ξ_k): every eigenvalue of Ã decays (Ã is similar to
   // the settled problem's K of galerkin_memory).
@@ -65,7 +79,9 @@ GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i,
   const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   Eigen::MatrixXd G[3] = {Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
   const double th = viscoelastic_ ? theta_k : 0.5;
-  add_pair_collisions(rates_, k, i, th, rho * th, sp.basis, weight_temperature, shapes, 3, G);
+  RadialBasis basis = sp.basis;
+  if (coarse_[k * rates_.size() + i]) basis.hermite_points = 20, basis.laguerre_points = 12;
+  add_pair_collisions(rates_, k, i, th, rho * th, basis, weight_temperature, shapes, 3, G);
   Sources out;
   const double unscale = 1.0 / std::sqrt(2.0 * th);
   for (std::size_t j = 0; j < 3; ++j) out[j] = unscale * (sp.Winv * G[j].transpose() * sp.W);
@@ -92,37 +108,41 @@ Stencil1 stencil1(double x, const char* what) {
 
 }  // namespace
 
-std::vector<std::pair<GalerkinDecay::Node, double>> GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T) const {
+void GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T, std::vector<std::pair<Node, double>>& out) const {
   const model::Mixture& mix = rates_.mixture();
   const double theta_k = T[k] / mix[k].mass, rho = T[i] / mix[i].mass / theta_k;
   const Stencil1 r = stencil1(std::log(rho) / pair_grid_step, "temperature ratio");
   const Stencil1 h = viscoelastic_ ? stencil1(std::log(theta_k) / scale_grid_step, "temperature") : Stencil1{0, 1, {1.0, 0.0, 0.0, 0.0}};
-  std::vector<std::pair<Node, double>> out;
   for (int a = 0; a < h.count; ++a)
     for (int j = 0; j < r.count; ++j) out.push_back({{h.first + a, r.first + j}, h.w[a] * r.w[j]});
-  return out;
 }
 
-const GalerkinDecay::Sources& GalerkinDecay::node(std::size_t k, std::size_t i, const Node& at) const {
-  std::map<Node, Sources>& table = tables_->pairs[k * rates_.size() + i];
-  auto it = table.find(at);
-  if (it == table.end()) it = table.emplace(at, pair_sources(k, i, std::exp(double(at.first) * scale_grid_step), std::exp(double(at.second) * pair_grid_step))).first;
-  return it->second;
-}
-
-void GalerkinDecay::prefetch(const double* T) const {
-  // The nodes the next assembly needs and the tables lack, computed together on OpenMP threads (each node wholly on
-  // one thread: the numbers do not depend on the thread count). A history moves every pair's ratio at once, so most
-  // new nodes come in batches.
+void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
+  // The nodes the assembly needs and the tables lack, computed together on OpenMP threads (each node wholly on one
+  // thread: the numbers do not depend on the thread count). A history moves every pair's ratio at once, so most new
+  // nodes come in batches. Then each pair's terms point into the tables (std::map nodes stay where they are).
   const std::size_t N = rates_.size();
+  stencils_.clear();
+  first_term_.assign(N * N + 1, 0);
   std::vector<std::pair<std::size_t, Node>> missing;  // pair k·N + i, node
   for (std::size_t k = 0; k < N; ++k) {
-    if (!species_[k].diffusive) continue;
-    for (std::size_t i = 0; i < N; ++i)
-      for (const auto& [at, w] : stencil(k, i, T))
-        if (!tables_->pairs[k * N + i].count(at)) missing.push_back({k * N + i, at});  // a pair's stencil nodes are distinct
+    const bool wanted = species == all_species ? species_[k].diffusive : k == species;
+    for (std::size_t i = 0; i < N; ++i) {
+      const std::size_t p = k * N + i, from = stencils_.size();
+      if (wanted) stencil(k, i, T, stencils_);
+      first_term_[p + 1] = stencils_.size();
+      for (std::size_t j = from; j < stencils_.size(); ++j)
+        if (!tables_->pairs[p].count(stencils_[j].first)) missing.push_back({p, stencils_[j].first});  // a pair's stencil nodes are distinct
+    }
   }
-  if (missing.empty()) return;
+  if (!missing.empty()) compute(missing);
+  terms_.resize(stencils_.size());
+  for (std::size_t p = 0; p < N * N; ++p)
+    for (std::size_t j = first_term_[p]; j < first_term_[p + 1]; ++j) terms_[j] = {&tables_->pairs[p].find(stencils_[j].first)->second, stencils_[j].second};
+}
+
+void GalerkinDecay::compute(const std::vector<std::pair<std::size_t, Node>>& missing) const {
+  const std::size_t N = rates_.size();
   std::vector<Sources> computed(missing.size());
   std::vector<std::exception_ptr> failed(missing.size());
 #pragma omp parallel for schedule(dynamic, 1) if (missing.size() > 1)
@@ -140,20 +160,22 @@ void GalerkinDecay::prefetch(const double* T) const {
   for (std::size_t m = 0; m < missing.size(); ++m) tables_->pairs[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
 }
 
+// exact: assembled directly at T; else from the terms of the last prefetch (at T).
 void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const {
   const model::Mixture& mix = rates_.mixture();
+  const std::size_t N = mix.size();
   const double theta_k = T[k] / mix[k].mass, scale = std::sqrt(2.0 * theta_k);
-  for (std::size_t i = 0; i < mix.size(); ++i) {
+  for (std::size_t i = 0; i < N; ++i) {
     const double w[3] = {scale, scale * (a2 ? a2[i] : 0.0), scale * (a3 ? a3[i] : 0.0)};
     if (exact) {
       const Sources s = pair_sources(k, i, theta_k, T[i] / mix[i].mass / theta_k);
       for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
       continue;
     }
-    for (const auto& [at, c] : stencil(k, i, T)) {
-      const Sources& p = node(k, i, at);
+    for (std::size_t j = first_term_[k * N + i]; j < first_term_[k * N + i + 1]; ++j) {
+      const Sources& p = *terms_[j].sources;
       for (std::size_t s = 0; s < 3; ++s)
-        if (w[s] != 0.0) out += (w[s] * c) * p[s];
+        if (w[s] != 0.0) out += (w[s] * terms_[j].weight) * p[s];
     }
   }
 }
@@ -161,6 +183,7 @@ void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double*
 Eigen::MatrixXd GalerkinDecay::collision_operator(std::size_t k, const double* T, const double* a2, const double* a3) const {
   const auto n = Eigen::Index(species_[k].kept);
   Eigen::MatrixXd out = Eigen::MatrixXd::Zero(n, n);
+  prefetch(T, k);
   add_collisions(k, T, a2, a3, false, out);
   return out;
 }

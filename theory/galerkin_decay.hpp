@@ -49,26 +49,34 @@ inline constexpr double pair_grid_step = 0.125;
 // varies as θ^(1/10); tests/theory/test_galerkin_decay.cpp: worst 2.0e-5 at step 2, 2.2e-5 at step 1; the MSDs of
 // v1 Figs. 9/10 move ≤ 3e-6 from step 1, with 3/4 of the nodes: 219/612 against 289/787).
 inline constexpr double scale_grid_step = 2.0;
+// A partner whose share of species k's collisions (n_i σ_ki² χ_ki √(θ_k + θ_i) μ_ik over the sum, at the reference
+// temperatures) is below this gets the coarsest pair rule, 20 × 12 (tracer_diffusion_galerkin.hpp): the operator
+// moves by ≤ 1.4e-6 of its largest entry (every pair coarse: 3.5e-4), far below the 60 × 36 rule's own 1e-3 for a
+// light species (tests/theory/test_galerkin_decay.cpp). v1 Fig. 8: ~3/4 of its pairs; its MSDs move ≤ 5.5e-6, the
+// whole-scene theory 20.7 → 14.5 s.
+inline constexpr double coarse_pair_share = 1e-3;
 
 // The pair tables of GalerkinDecay, kept apart from it so that the levels of one scene that solve the same Galerkin
 // problem (the judged kinetic-converged-cooling3 and its `converged` companion, kinetic-converged: the same mixture and
 // restitution, the same basis) build them once (scene_theory.cpp; v1 Fig. 8: ~3/4 of each converged level's time is
 // its tables). The tables depend on the mixture, the restitution law and the basis, the basis on T_ref and the size:
-// a store serves the decays of one scene built with one T_ref and size (any other gets tables of its own).
+// a store serves the decays of one scene built with one T_ref, size and coarse share (any other gets tables of its own).
 struct GalerkinPairTables {
   using Node = std::pair<long, long>;              // grid indices in ln θ_k (0 at constant ε) and ln ρ
   using Sources = std::array<Eigen::MatrixXd, 3>;  // Ã of G⁰, G², G³, over √(2θ_k)
   std::vector<double> T_ref;
   std::size_t size = 0;
+  double coarse_share = 0.0;
   std::vector<std::map<Node, Sources>> pairs;  // per ordered pair (k·N + i): node ↦ sources
 };
 
 class GalerkinDecay final : public VelocityDecay {
  public:
-  // T_ref: the temperatures that fix each species' basis (x₀) and whether it is diffusive. tables: a store shared with
-  // other decays of the same scene (null, or one built for another T_ref or size: tables of its own).
+  // T_ref: the temperatures that fix each species' basis (x₀), whether it is diffusive and the partners' shares. tables:
+  // a store shared with other decays of the same scene (null, or one built for another T_ref, size or coarse share:
+  // tables of its own). coarse_share: coarse_pair_share (0: every pair at its basis's rule).
   GalerkinDecay(const CollisionRates& rates, const std::vector<double>& T_ref, std::size_t size = converged_diffusion_basis,
-                std::shared_ptr<GalerkinPairTables> tables = nullptr);
+                std::shared_ptr<GalerkinPairTables> tables = nullptr, double coarse_share = coarse_pair_share);
   void rates(const double* T, const double* xi, double* nu) const override;  // the first-Sonine ν_k
   std::size_t modes() const override { return size_; }
   bool uses_sonine_coefficients() const override { return true; }
@@ -90,10 +98,17 @@ class GalerkinDecay final : public VelocityDecay {
     bool diffusive = true;
   };
   using Node = GalerkinPairTables::Node;
+  struct Term {  // one node of a pair's stencil at the current state
+    const Sources* sources;
+    double weight;
+  };
+  static constexpr std::size_t all_species = std::size_t(-1);
   Sources pair_sources(std::size_t k, std::size_t i, double theta_k, double rho) const;  // assembled, transformed, over √(2θ_k)
-  std::vector<std::pair<Node, double>> stencil(std::size_t k, std::size_t i, const double* T) const;  // nodes and weights at T
-  const Sources& node(std::size_t k, std::size_t i, const Node& at) const;
-  void prefetch(const double* T) const;  // the nodes an assembly at T needs, computed in parallel
+  void stencil(std::size_t k, std::size_t i, const double* T, std::vector<std::pair<Node, double>>& out) const;  // appends nodes, weights at T
+  // The stencils of every pair of the diffusive species (or of `species` alone) at T into terms_, the nodes the tables
+  // lack computed first, together on OpenMP threads.
+  void prefetch(const double* T, std::size_t species = all_species) const;
+  void compute(const std::vector<std::pair<std::size_t, Node>>& missing) const;  // pair k·N + i and node, into the tables
   double first_sonine_rate(std::size_t k, const double* T, const double* xi) const;  // ν_k = τ_v,k⁻¹ + ξ_k/2
   void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
 
@@ -101,7 +116,11 @@ class GalerkinDecay final : public VelocityDecay {
   std::size_t size_;
   std::vector<Species> species_;
   bool viscoelastic_;
-  std::shared_ptr<GalerkinPairTables> tables_;  // filled as the history reaches new nodes (node, prefetch)
+  std::vector<bool> coarse_;  // per pair k·N + i: the coarsest pair rule (coarse_pair_share)
+  std::shared_ptr<GalerkinPairTables> tables_;  // filled as the history reaches new nodes (prefetch)
+  mutable std::vector<std::pair<Node, double>> stencils_;  // prefetch's, all pairs together
+  mutable std::vector<Term> terms_;                         // pair p's: terms_[first_term_[p] … first_term_[p + 1])
+  mutable std::vector<std::size_t> first_term_;
   mutable Eigen::MatrixXd work_;
   mutable Eigen::VectorXd u_, du_;
 };
