@@ -19,7 +19,7 @@
 //   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
 // The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
 // a_i3 G³(ρ)], ρ = θ_i/θ_k, the pair problem at θ_k = 1/2 (add_pair_collisions). Those are tabulated on a grid in
-// ln ρ (step pair_grid_step) as the history reaches them, ~3 ms per node (those one right-hand side needs on OpenMP
+// ln ρ (step pair_grid_step) as the history reaches them, 0.1–1.3 ms per node by the pair rule (those one right-hand side needs on OpenMP
 // threads together), and interpolated by Catmull–Rom cubics
 // (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
 // reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.
@@ -53,7 +53,7 @@ inline constexpr double scale_grid_step = 2.0;
 // temperatures) is below this gets the coarsest pair rule, 20 × 12 (tracer_diffusion_galerkin.hpp): the operator
 // moves by ≤ 1.4e-6 of its largest entry (every pair coarse: 3.5e-4), far below the 60 × 36 rule's own 1e-3 for a
 // light species (tests/theory/test_galerkin_decay.cpp). v1 Fig. 8: ~3/4 of its pairs; its MSDs move ≤ 5.5e-6, the
-// whole-scene theory 20.7 → 14.5 s.
+// whole-scene theory 20.7 → 14.5 s (9.5 s with the 40 × 24 rule of tracer_diffusion_galerkin.hpp).
 inline constexpr double coarse_pair_share = 1e-3;
 
 // The pair tables of GalerkinDecay, kept apart from it so that the levels of one scene that solve the same Galerkin

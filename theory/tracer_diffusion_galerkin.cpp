@@ -27,7 +27,7 @@ struct Tier {
   double x0;  // from this x₀ on
   std::size_t hermite, laguerre;
 };
-constexpr Tier tiers[] = {{0.0, 60, 36}, {4.0, 30, 16}, {15.0, 20, 12}};
+constexpr Tier tiers[] = {{0.0, 60, 36}, {1.5, 40, 24}, {4.0, 30, 16}, {15.0, 20, 12}};
 
 // The rules of one tier's point counts, built once (thread-safe static initialisation).
 const Rules& rules(std::size_t hermite, std::size_t laguerre) {

@@ -53,11 +53,14 @@ struct RadialBasis {
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
-// x₀ is small, the light species): 60 × 36 below x₀ = 4, 30 × 16 from 4, 20 × 12 from 15. Each pair source within
-// 1.6e-5 of its largest entry of the 60 × 36 rule's (tests/theory/test_tracer_diffusion_galerkin.cpp); in the
+// x₀ is small, the light species): 60 × 36 below x₀ = 1.5, 40 × 24 from 1.5, 30 × 16 from 4, 20 × 12 from 15. Each
+// pair source within 1.6e-5 of its largest entry of the 60 × 36 rule's (tests/theory/test_tracer_diffusion_galerkin.cpp); in the
 // history tables' own coordinates (galerkin_decay.hpp) ≤ 1.5e-4 against 120 × 72 over ρ within e^(±4) of the start
 // (x₀ = 4.3–121, scenes and binaries measured 2026-12-03), where 60 × 36 itself errs by 1e-3–3e-2 for the light
-// species (x₀ = 0.01–0.7). Cost: 1/4.5 resp. 1/9 of the finest rule's.
+// species (x₀ = 0.01–0.7). 40 × 24 (2026-12-03, late; v1 Fig. 8's species have x₀ = 1.1–4.2): ≤ 1.5e-5 against
+// 90 × 54 at x₀ = 1.5–4 (v1 Fig. 8's pairs with partners 1, 2, 6, 13 at ρ within e^(±2) of the settled one; 60 × 36
+// there 2.5e-7), 3e-5 at x₀ = 1.2, 5e-5 at 1.0, 1e-3 at 0.8 (hence from 1.5). Cost: 1/2.25, 1/4.5 resp. 1/9 of the
+// finest rule's.
 RadialBasis collision_weighted_basis(std::size_t size, double x0);
 
 struct GalerkinOptions {
