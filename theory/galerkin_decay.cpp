@@ -207,12 +207,7 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
                                       const double* a2, const double* a3) const {
   const std::size_t N = rates_.size();
   prefetch(T);
-  // The species on OpenMP threads (each one's rows wholly on one thread: the numbers do not depend on the thread count);
-  // v1 Fig. 8: the assembly was a third of the level's time, run serially while the tables' threads waited.
-#pragma omp parallel for schedule(dynamic, 1) if (N > 1)
   for (std::size_t k = 0; k < N; ++k) {
-    thread_local Eigen::MatrixXd A;
-    thread_local Eigen::VectorXd u, du;
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;
     if (!sp.diffusive) {  // no diffusive solution: first-Sonine ν_k, the other unknowns decoupled
@@ -222,14 +217,14 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
       continue;
     }
     const auto n = Eigen::Index(sp.kept);
-    A.setZero(n, n);
-    add_collisions(k, T, a2, a3, false, A);
-    A -= 0.5 * xi[k] * sp.S;
-    u.resize(n);
-    for (Eigen::Index p = 0; p < n; ++p) u[p] = Q[std::size_t(p) * N + k];
-    du.noalias() = -A * u;
-    du += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]) - 0.5 * xi[k] * u;
-    for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du[p];
+    work_.setZero(n, n);
+    add_collisions(k, T, a2, a3, false, work_);
+    work_ -= 0.5 * xi[k] * sp.S;
+    u_.resize(n);
+    for (Eigen::Index p = 0; p < n; ++p) u_[p] = Q[std::size_t(p) * N + k];
+    du_.noalias() = -work_ * u_;
+    du_ += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]) - 0.5 * xi[k] * u_;
+    for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du_[p];
     for (std::size_t p = sp.kept; p < size_; ++p) dQ[p * N + k] = 0.0;  // unknowns beyond the kept span stay 0
   }
 }

@@ -121,6 +121,8 @@ class GalerkinDecay final : public VelocityDecay {
   mutable std::vector<std::pair<Node, double>> stencils_;  // prefetch's, all pairs together
   mutable std::vector<Term> terms_;                         // pair p's: terms_[first_term_[p] … first_term_[p + 1])
   mutable std::vector<std::size_t> first_term_;
+  mutable Eigen::MatrixXd work_;
+  mutable Eigen::VectorXd u_, du_;
 };
 
 }  // namespace granmix::theory
