@@ -60,8 +60,8 @@ struct Solution {
   double x2, x3;  // ⟨c⁴⟩_φ, ⟨c⁶⟩_φ
 };
 
-// The Galerkin problem of `size` functions at θ_ref (intruder θ_k = θ_ref T₁/m), from one assembly C of `full` functions
-// (the basis is nested: the smaller problem is its leading block).
+// The Galerkin problem of its first `size` functions at θ_ref, from the assembly C of the whole basis (nested: a
+// smaller problem is the leading block of the same assembly).
 Solution solve(const Eigen::MatrixXd& C, double zeta1, double lambda, std::size_t size) {
   const auto m = Eigen::Index(size - 1);
   Eigen::MatrixXd K(m, m);

@@ -26,7 +26,8 @@ namespace granmix::theory {
 struct TracerTemperature {
   double theta = std::numeric_limits<double>::quiet_NaN();  // T₂/T₁ (NaN: no stationary solution in the basis)
   double a2 = 0.0, a3 = 0.0;  // the intruder's Sonine coefficients (its cumulants), at its own temperature
-  double change = std::numeric_limits<double>::quiet_NaN();  // |θ − θ with one function fewer|/θ: the truncation left
+  // The truncation left: |θ′ − θ|/θ, θ′ the temperature one function fewer gives at the same basis temperature.
+  double change = std::numeric_limits<double>::quiet_NaN();
 };
 
 inline constexpr std::size_t converged_temperature_basis = 8;
