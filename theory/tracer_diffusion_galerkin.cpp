@@ -44,17 +44,17 @@ const Rules& finest_rules() { return rules(tiers[0].hermite, tiers[0].laguerre);
 
 constexpr std::size_t max_basis = 16;
 
-// Rows L[m·count + p] = L_m^(3/2)(x_p), m < modes: the recurrence of sonine_vector_basis run over all points at once
-// (independent points in the inner loop, so it pipelines and vectorises).
-void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L) {
+// Rows L[m·count + p] = L_m^(α)(s·x_p), m < modes (α = 3/2, s = 1: the recurrence of sonine_vector_basis), run over
+// all points at once (independent points in the inner loop, so it pipelines and vectorises).
+void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L, double alpha = 1.5, double s = 1.0) {
   for (std::size_t p = 0; p < count; ++p) L[p] = 1.0;
   if (modes > 1)
-    for (std::size_t p = 0; p < count; ++p) L[count + p] = 2.5 - x[p];
+    for (std::size_t p = 0; p < count; ++p) L[count + p] = 1.0 + alpha - x[p] * s;
   for (std::size_t n = 1; n + 1 < modes; ++n) {
-    const double a = 2.0 * double(n) + 2.5, b = double(n) + 1.5, inv = 1.0 / double(n + 1);
+    const double a = 2.0 * double(n) + 1.0 + alpha, b = double(n) + alpha, inv = 1.0 / double(n + 1);
     const double *Ln = L + n * count, *Lm = L + (n - 1) * count;
     double* Lp = L + (n + 1) * count;
-    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p]) * Ln[p] - b * Lm[p]) * inv;
+    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p] * s) * Ln[p] - b * Lm[p]) * inv;
   }
 }
 
@@ -78,6 +78,12 @@ RadialBasis sonine_radial_basis(std::size_t modes) {
             if (xdB)
               for (std::size_t m = 0; m < modes; ++m) x_derivative_row(B, count, m, nullptr, xdB + m * count);
           }};
+}
+
+RadialBasis density_radial_basis(std::size_t size, double lambda) {
+  if (size < 1 || size > max_basis) throw std::invalid_argument("density_radial_basis: 1 to 16 functions");
+  if (!(lambda > 0.0 && std::isfinite(lambda))) throw std::invalid_argument("density_radial_basis: lambda must be positive");
+  return {size, [size, s = 1.0 / lambda](const double* x, std::size_t count, double* B, double*) { laguerre_rows(x, count, size, B, 0.5, s); }};
 }
 
 RadialBasis collision_weighted_basis(std::size_t size, double x0) {

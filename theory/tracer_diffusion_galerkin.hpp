@@ -52,6 +52,7 @@ struct RadialBasis {
   std::size_t hermite_points = 60, laguerre_points = 36;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
+RadialBasis density_radial_basis(std::size_t size, double lambda);  // L_q^(1/2)(x/λ): a tracer's own distribution (xdB not given)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
 // x₀ is small, the light species): 60 × 36 below x₀ = 1.5, 40 × 24 from 1.5, 30 × 16 from 4, 20 × 12 from 15. Each
 // pair source within 1.6e-5 of its largest entry of the 60 × 36 rule's (tests/theory/test_tracer_diffusion_galerkin.cpp); in the

@@ -41,20 +41,6 @@ double moment(std::size_t q, std::size_t j) {
   return sum;
 }
 
-RadialBasis density_basis(std::size_t size, double lambda) {
-  return {size, [size, lambda](const double* x, std::size_t count, double* B, double*) {
-            for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
-            if (size > 1)
-              for (std::size_t p = 0; p < count; ++p) B[count + p] = 1.0 + alpha - x[p] / lambda;
-            for (std::size_t n = 1; n + 1 < size; ++n) {
-              const double a = 2.0 * double(n) + 1.0 + alpha, b = double(n) + alpha, inv = 1.0 / double(n + 1);
-              const double *Ln = B + n * count, *Lm = B + (n - 1) * count;
-              double* Lp = B + (n + 1) * count;
-              for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p] / lambda) * Ln[p] - b * Lm[p]) * inv;
-            }
-          }};
-}
-
 struct Solution {
   double ratio;  // ⟨c²⟩_φ/(3/2): the solution's temperature in units of θ_ref
   double x2, x3;  // ⟨c⁴⟩_φ, ⟨c⁶⟩_φ
@@ -97,7 +83,7 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates, doub
   if (size < 2 || size > 16) throw std::invalid_argument("converged tracer temperature: 2 to 16 functions");
   if (!(theta_start > 0.0 && std::isfinite(theta_start))) throw std::invalid_argument("converged tracer temperature: theta_start must be positive");
   const model::Mixture& mix = rates.mixture();
-  const RadialBasis basis = density_basis(size, lambda);
+  const RadialBasis basis = density_radial_basis(size, lambda);
   TracerTemperature out;
   double theta = theta_start;
   for (int pass = 0; pass < 100; ++pass) {
