@@ -45,6 +45,11 @@ class VelocityDecay {
   // Maxwellian). Default, one mode: dQ_k/dt = 3T_k/m_k − ν_k Q_k with ν_k of rates(); nu: N values of scratch.
   virtual void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ,
                                  double* nu, const double* a2, const double* a3) const;
+  // The rates are affine in Q. A model that keeps what its last correlation_rates call assembled offers
+  // Jv = ∂(dQ/dt)/∂Q · v (modes() blocks of N) at that call's state without a collision integral again; without it
+  // TemperatureHistory takes difference quotients of the whole right-hand side.
+  virtual bool offers_correlation_jacobian() const { return false; }
+  virtual void correlation_jacobian_times(const double* /*v*/, double* /*Jv*/) const {}
 };
 
 // The paper level, both closures in one object: ξ_k of v1 (A2) (= Garzó–Dufty at a₂ = 0) and

@@ -45,6 +45,7 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
     for (int j = 0; j < 3; ++j) sp.s[std::size_t(j)] = sp.Winv * avg.r[j];
     species_.push_back(std::move(sp));
   }
+  linear_.resize(N);
   // Each partner's share of species k's collisions at the reference state: the rare ones get the coarse pair rule.
   const model::Mixture& mix = rates.mixture();
   coarse_.assign(N * N, false);
@@ -210,22 +211,43 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
   for (std::size_t k = 0; k < N; ++k) {
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;
+    Eigen::MatrixXd& L = linear_[k];
     if (!sp.diffusive) {  // no diffusive solution: first-Sonine ν_k, the other unknowns decoupled
       const double nu1 = first_sonine_rate(k, T, xi);
+      L.setConstant(1, 1, -nu1);
       dQ[k] = 3.0 * theta - nu1 * Q[k];
       for (std::size_t p = 1; p < size_; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
       continue;
     }
     const auto n = Eigen::Index(sp.kept);
-    work_.setZero(n, n);
-    add_collisions(k, T, a2, a3, false, work_);
-    work_ -= 0.5 * xi[k] * sp.S;
+    L.setZero(n, n);
+    add_collisions(k, T, a2, a3, false, L);
+    L -= 0.5 * xi[k] * sp.S;
+    L.diagonal().array() += 0.5 * xi[k];
+    L = -L;
     u_.resize(n);
     for (Eigen::Index p = 0; p < n; ++p) u_[p] = Q[std::size_t(p) * N + k];
-    du_.noalias() = -work_ * u_;
-    du_ += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]) - 0.5 * xi[k] * u_;
+    du_.noalias() = L * u_;
+    du_ += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]);
     for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du_[p];
     for (std::size_t p = sp.kept; p < size_; ++p) dQ[p * N + k] = 0.0;  // unknowns beyond the kept span stay 0
+  }
+}
+
+void GalerkinDecay::correlation_jacobian_times(const double* v, double* Jv) const {
+  const std::size_t N = rates_.size();
+  for (std::size_t k = 0; k < N; ++k) {
+    const Eigen::MatrixXd& L = linear_[k];
+    if (!species_[k].diffusive) {
+      for (std::size_t p = 0; p < size_; ++p) Jv[p * N + k] = L(0, 0) * v[p * N + k];
+      continue;
+    }
+    const Eigen::Index n = L.rows();
+    u_.resize(n);
+    for (Eigen::Index p = 0; p < n; ++p) u_[p] = v[std::size_t(p) * N + k];
+    du_.noalias() = L * u_;
+    for (Eigen::Index p = 0; p < n; ++p) Jv[std::size_t(p) * N + k] = du_[p];
+    for (std::size_t p = species_[k].kept; p < size_; ++p) Jv[p * N + k] = 0.0;
   }
 }
 

@@ -82,6 +82,8 @@ class GalerkinDecay final : public VelocityDecay {
   bool uses_sonine_coefficients() const override { return true; }
   void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ, double* nu,
                          const double* a2, const double* a3) const override;
+  bool offers_correlation_jacobian() const override { return true; }
+  void correlation_jacobian_times(const double* v, double* Jv) const override;  // −(Ã + ξ_k/2) v per species, kept from the last call
   // Ã_coll of species k at the temperatures T and shapes a2, a3 (null: Maxwellian), interpolated; for tests.
   Eigen::MatrixXd collision_operator(std::size_t k, const double* T, const double* a2, const double* a3) const;
   // The same assembled directly (no table): the interpolation's reference.
@@ -121,7 +123,7 @@ class GalerkinDecay final : public VelocityDecay {
   mutable std::vector<std::pair<Node, double>> stencils_;  // prefetch's, all pairs together
   mutable std::vector<Term> terms_;                         // pair p's: terms_[first_term_[p] … first_term_[p + 1])
   mutable std::vector<std::size_t> first_term_;
-  mutable Eigen::MatrixXd work_;
+  mutable std::vector<Eigen::MatrixXd> linear_;  // per species, the last correlation_rates's −(Ã + ξ_k/2) (1×1 −ν_k if not diffusive)
   mutable Eigen::VectorXd u_, du_;
 };
 

@@ -84,6 +84,13 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
   for (std::size_t j = 0; j < nz_; ++j) y[z_at_ + j] = z0[j], atol[z_at_ + j] = z_atol[j];
   y0_.assign(y, y + n_);
   cv.init(0.0, opt_.rtol, atol.data());
+  // GMRES's products J·v: see jacobian_times.
+  const bool own_jtimes = gmres && opt_.vacf && decay_->offers_correlation_jacobian();
+  if (own_jtimes) {
+    model::check_cvode(CVodeSetJacTimes(cv.mem(), nullptr, jtimes), "CVodeSetJacTimes");
+    cvode_mem_ = cv.mem();
+    weights_ = model::check_alloc(N_VClone(cv.y()), "N_VClone");
+  }
   const double s_end = to_s(t_end_);
   model::check_cvode(CVodeSetStopTime(cv.mem(), s_end), "CVodeSetStopTime");
   model::check_cvode(CVodeSetMaxNumSteps(cv.mem(), 100000), "CVodeSetMaxNumSteps");
@@ -112,9 +119,12 @@ TemperatureHistory::TemperatureHistory(const CollisionRates& rates, std::vector<
     }
   } catch (...) {
     N_VDestroy(dky_v);
+    if (weights_) N_VDestroy(weights_), weights_ = nullptr;
     throw;
   }
   N_VDestroy(dky_v);
+  if (weights_) N_VDestroy(weights_), weights_ = nullptr;
+  cvode_mem_ = nullptr;
   long v = 0;
   model::check_cvode(CVodeGetNumSteps(cv.mem(), &v), "CVodeGetNumSteps");
   stats_.steps = v;
@@ -139,7 +149,54 @@ int TemperatureHistory::rhs(double s, N_Vector yv, N_Vector dyv, void* self_ptr)
   }
 }
 
-int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const double* y, double* dy) {
+int TemperatureHistory::jtimes(N_Vector v, N_Vector Jv, double s, N_Vector y, N_Vector fy, void* self_ptr, N_Vector tmp) {
+  auto& self = *static_cast<TemperatureHistory*>(self_ptr);
+  try {
+    return self.jacobian_times(N_VGetArrayPointer(v), N_VGetArrayPointer(Jv), s, N_VGetArrayPointer(y), N_VGetArrayPointer(fy),
+                               N_VGetArrayPointer(tmp));
+  } catch (...) {
+    self.rhs_error_ = std::current_exception();
+    return -1;
+  }
+}
+
+// GMRES's J·v where the velocity correlation's rates are affine in its unknowns (GalerkinDecay): its block exactly,
+// from the operators the last right-hand side assembled (in CVODE's Newton iteration the right-hand side at y comes
+// before the products at y; checked, and assembled again if not), dR²/ds = 2J exactly, and the rest (ln T, z, τ, I)
+// as CVODE's own difference quotient (perturbation 1/‖v‖ in its weighted norm) of the right-hand side without the
+// correlation: no collision integral of the memory. Left out: how the memory's rates move with ln T and z. The
+// unknowns before the correlation do not depend on it, so the Jacobian is block lower-triangular and this keeps its
+// diagonal blocks exact; the Newton iteration converges on the true right-hand side (its convergence test), the
+// left-out block costs it iterations at most. v1 Fig. 8: 1885 + 1475 (difference-quotient) right-hand sides → see
+// README (bench section).
+int TemperatureHistory::jacobian_times(const double* v, double* Jv, double s, const double* y, const double* fy, double* tmp) {
+  const std::size_t state = z_at_ + nz_;
+  if (assembled_at_.size() != state || !std::equal(y, y + state, assembled_at_.begin())) {
+    const int flag = derivatives(*this, s, y, tmp);
+    if (flag != 0) return flag;
+  }
+  model::check_cvode(CVodeGetErrWeights(cvode_mem_, weights_), "CVodeGetErrWeights");
+  const double* w = N_VGetArrayPointer(weights_);
+  double norm = 0.0;
+  for (std::size_t c = 0; c < n_; ++c) norm += (v[c] * w[c]) * (v[c] * w[c]);
+  norm = std::sqrt(norm / double(n_));
+  const double dt_ds = this->dt_ds(s);
+  if (norm > 0.0) {
+    const double sigma = 1.0 / norm;
+    for (std::size_t c = 0; c < r2_at_; ++c) tmp[c] = y[c] + sigma * v[c];
+    const int flag = derivatives(*this, s, tmp, Jv, false);
+    if (flag != 0) return flag;
+    for (std::size_t c = 0; c < r2_at_; ++c) Jv[c] = (Jv[c] - fy[c]) / sigma;
+  } else {
+    std::fill(Jv, Jv + r2_at_, 0.0);
+  }
+  for (std::size_t k = 0; k < N_; ++k) Jv[r2_at_ + k] = 2.0 * v[j_at_ + k] * dt_ds;
+  decay_->correlation_jacobian_times(v + j_at_, Jv + j_at_);
+  for (std::size_t j = 0; j < decay_->modes() * N_; ++j) Jv[j_at_ + j] *= dt_ds;
+  return 0;
+}
+
+int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const double* y, double* dy, bool correlation) {
   const std::size_t N = self.N_;
   const double dt_ds = self.dt_ds(s);
   double* T = self.work_T_.data();
@@ -158,7 +215,7 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
     for (std::size_t k = 0; k < N; ++k)
       dy[self.int_at_ + k] = T[k] / (itau[k] * self.rates_.mixture()[k].mass) * dt_ds;  // D_k, v1 Eq. (19)
   }
-  if (self.opt_.vacf) {
+  if (self.opt_.vacf && correlation) {
     // A tagged velocity decays at ν_k (default τ_v⁻¹ + ξ_k/2, physics.md §3: (A1) is that rate minus
     // ξ/2); with it this ODE reproduces Eq. (17) exactly when τ̂ is constant. The decay model may bring
     // more modes (the kinetic level's second Sonine mode).
@@ -173,6 +230,7 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
                                    third ? a3 : nullptr);
     for (std::size_t k = 0; k < N; ++k) dy[self.r2_at_ + k] = 2.0 * y[self.j_at_ + k] * dt_ds;
     for (std::size_t j = 0; j < self.decay_->modes() * N; ++j) dy[self.j_at_ + j] *= dt_ds;
+    if (self.cvode_mem_) self.assembled_at_.assign(y, y + self.z_at_ + self.nz_);
   }
   return 0;
 }

@@ -90,7 +90,10 @@ class TemperatureHistory {
   };
   double component(double t, std::size_t index) const;
   static int rhs(double s, N_Vector y, N_Vector dy, void* self);
-  static int derivatives(TemperatureHistory& self, double s, const double* y, double* dy);
+  // correlation = false: only the unknowns before the velocity correlation's (ln T, z, τ, I).
+  static int derivatives(TemperatureHistory& self, double s, const double* y, double* dy, bool correlation = true);
+  static int jtimes(N_Vector v, N_Vector Jv, double s, N_Vector y, N_Vector fy, void* self, N_Vector tmp);
+  int jacobian_times(const double* v, double* Jv, double s, const double* y, const double* fy, double* tmp);
 
   const CollisionRates& rates_;
   std::vector<double> T0_;
@@ -105,6 +108,9 @@ class TemperatureHistory {
   std::vector<double> y0_;
   SolverStats stats_;
   std::exception_ptr rhs_error_;
+  void* cvode_mem_ = nullptr;       // for the error weights of jtimes's difference quotient
+  N_Vector weights_ = nullptr;      // those weights (owned by the constructor's scope)
+  std::vector<double> assembled_at_;  // ln T and z of the decay's last correlation_rates (empty: none yet)
   mutable std::vector<double> work_T_, work_a_, work_xi_, work_nu_, work_a2_, work_a3_;
 };
 

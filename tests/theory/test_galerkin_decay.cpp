@@ -159,3 +159,52 @@ TEST_CASE("converged memory in time: at settled ratios the forward ODE is the se
   check_settled_history(0.5, 1e-5);
   check_settled_history(0.2, 1e-5);
 }
+
+TEST_CASE("converged memory in time: its Jacobian-times-vector is the Q-derivative of its rates", "[theory]") {
+  // The rates are affine in Q, so dQ(Q + v) − dQ(Q) is exactly Jv (GMRES's product in TemperatureHistory), for a
+  // shaped, unsettled state of the binary (partners' a's on, one species far from its settled ratio). A wrong sign of
+  // the scaling term, a missing ξ_k/2 or a stale operator would be off by O(1) of the entries.
+  const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
+  const std::vector<double> Tref = settled_temperatures(r).T;
+  const GalerkinDecay d(r, Tref);
+  const std::size_t N = 2, n = N * d.modes();
+  const double T[2] = {1.0, 7.0}, xi[2] = {0.3, 0.2}, a2[2] = {0.05, -0.1}, a3[2] = {-0.01, 0.02};
+  std::vector<double> Q(n), v(n), dQ(n), dQv(n), Jv(n), nu(N);
+  for (std::size_t j = 0; j < n; ++j) Q[j] = std::sin(1.0 + double(j)), v[j] = std::cos(2.0 * double(j));
+  std::vector<double> Qv = Q;
+  for (std::size_t j = 0; j < n; ++j) Qv[j] += v[j];
+  d.correlation_rates(r, T, xi, Qv.data(), dQv.data(), nu.data(), a2, a3);
+  d.correlation_rates(r, T, xi, Q.data(), dQ.data(), nu.data(), a2, a3);
+  REQUIRE(d.offers_correlation_jacobian());
+  d.correlation_jacobian_times(v.data(), Jv.data());
+  double worst = 0.0, scale = 0.0;
+  for (std::size_t j = 0; j < n; ++j) worst = std::max(worst, std::abs(dQv[j] - dQ[j] - Jv[j])), scale = std::max(scale, std::abs(Jv[j]));
+  std::printf("Galerkin decay Jv against dQ(Q + v) - dQ(Q): %.1e of its largest entry %.3g\n", worst / scale, scale);
+  CHECK(scale > 0.1);
+  CHECK(worst < 1e-12 * scale);
+}
+
+TEST_CASE("converged memory in time: GMRES with its own Jacobian-times-vector gives dense LU's history", "[theory]") {
+  // TemperatureHistory's jtimes (the memory's block exact, ln T and the cumulants by a difference quotient, the
+  // memory's dependence on T left out) only steers Newton: the solution is the same to CVODE's tolerance. From equal
+  // temperatures (ratios move by 1e2 over the history, so the left-out block is not small); rtol 1e-10.
+  const CollisionRates r = test::constant_rates(test::bo_ternary(), 0.5);
+  const std::vector<double> T0(3, 1.0), Tref = settled_temperatures(r).T;
+  TemperatureOptions opt;
+  opt.vacf = true;
+  opt.rtol = 1e-10;
+  opt.decay = std::make_shared<GalerkinDecay>(r, Tref);
+  opt.solver = TemperatureOptions::Solver::dense;
+  const TemperatureHistory dense(r, T0, 1e4, opt);
+  opt.solver = TemperatureOptions::Solver::gmres;
+  const TemperatureHistory gmres(r, T0, 1e4, opt);
+  double worst = 0.0;
+  for (double t : {0.01, 0.3, 3.0, 30.0, 300.0, 1e4})
+    for (std::size_t k = 0; k < 3; ++k) worst = std::max(worst, std::abs(gmres.msd_vacf(t, k) / dense.msd_vacf(t, k) - 1.0));
+  std::printf("Galerkin decay history, GMRES with jtimes against dense LU: MSD %.1e; Newton iterations %ld against %ld, steps %ld against %ld, "
+              "linear iterations %ld\n",
+              worst, gmres.stats().nonlinear_iterations, dense.stats().nonlinear_iterations, gmres.stats().steps, dense.stats().steps,
+              gmres.stats().linear_iterations);
+  CHECK(gmres.stats().linear_iterations > 0);
+  CHECK(worst < 1e-7);
+}
