@@ -8,7 +8,9 @@
 // between collisions du/ds = (ζ/2)u, collisions with gas particles of velocity w at the rate n₁σ₁₂²χ π|u − w| over the
 // gas's distribution f_M(w)(1 + a₂S₂(w²/2)) (its first Sonine shape, S₂(x) = x²/2 − 5x/2 + 15/8), σ̂ ∝ (ĝ·σ̂),
 // u′ = u − μ(1+ε)(g·σ̂)σ̂, μ = m₁/(m₁ + m₂). Printed: θ = T₂/T₁ = m₂⟨u²⟩/3 (50 batch means after the burn-in), and
-// ξ₁₂ = −n₂⟨ΔE_gas⟩/(n₁ 3/2), the gas's heating by the intruders (the gas's energy gains in the same collisions).
+// the intruder's a₂ = (3/5)⟨u⁴⟩/⟨u²⟩² − 1, ξ₁₂ = −n₂⟨ΔE_gas⟩/(n₁ 3/2), the gas's heating by the intruders (the gas's energy gains in the same collisions).
+// Check: an elastic intruder in a gas at rest in time (eps=1 zeta=0 a2=0 theta0=1) gives θ = 1.00, a₂ = 0.001/−0.0002
+// (two seeds, 1e6 time units).
 // self_consistent=1: ζ = zeta + ξ₁₂(θ) (the gas cools at its own rate plus the intruders' heating), four passes (the fixed point contracts by ~0.16 per pass here).
 // Defaults: v2 Fig. 5 (v1 Fig. 3's gas, m₂ = 100, σ₂ = 100^(1/3), n₂ = 1e-5, ε = 0.5) with the gas's one-species
 // first-Sonine a₂ = c₁/2 = 0.052459 and rate ζ = ξ₁₁(1 + 3c₁/32) = 0.17898878 (granmix hcs on the gas alone).
@@ -34,7 +36,7 @@ struct Params {
 };
 
 struct Result {
-  double theta, err, xi12;
+  double theta, err, xi12, a2;  // a2: the intruder's own, (3/5)⟨u⁴⟩/⟨u²⟩² − 1
   long collisions;
 };
 
@@ -74,6 +76,7 @@ Result run(const Params& p, double zeta) {
   Vec u{sd0 * N01(rng), sd0 * N01(rng), sd0 * N01(rng)};
   constexpr int batches = 50;
   std::vector<double> u2_time(batches, 0), time(batches, 0);
+  double u4_time = 0;
   double s = 0, gas_gain = 0;
   long collisions = 0;
   while (s < p.length) {
@@ -87,6 +90,7 @@ Result run(const Params& p, double zeta) {
       const int b = std::min(batches - 1, int((s - p.burn) / (p.length - p.burn) * batches));
       u2_time[b] += zeta > 0 ? speed * speed * std::expm1(zeta * wait) / zeta : speed * speed * wait;
       time[b] += wait;
+      u4_time += zeta > 0 ? std::pow(speed, 4) * std::expm1(2 * zeta * wait) / (2 * zeta) : std::pow(speed, 4) * wait;
     }
     for (double& x : u) x *= std::exp(0.5 * zeta * wait);
     s += wait;
@@ -107,12 +111,14 @@ Result run(const Params& p, double zeta) {
     if (s > p.burn) gas_gain += 0.5 * (dot(w_after, w_after) - dot(w, w));
     ++collisions;
   }
-  double m = 0, m2 = 0;
+  double m = 0, m2 = 0, u2 = 0, t = 0;
+  for (int b = 0; b < batches; ++b) u2 += u2_time[b], t += time[b];
+  const double a2 = 0.6 * (u4_time / t) / ((u2 / t) * (u2 / t)) - 1;
   for (int b = 0; b < batches; ++b) {
     const double th = u2_time[b] / time[b] * p.m2 / 3;
     m += th / batches, m2 += th * th / batches;
   }
-  return {m, std::sqrt((m2 - m * m) / (batches - 1)), -(p.n2 * gas_gain / (p.length - p.burn)) / (1.5 * p.n1), collisions};
+  return {m, std::sqrt((m2 - m * m) / (batches - 1)), -(p.n2 * gas_gain / (p.length - p.burn)) / (1.5 * p.n1), a2, collisions};
 }
 
 }  // namespace
@@ -148,8 +154,8 @@ int main(int argc, char** argv) {
   double zeta = p.zeta;
   for (int pass = 0; pass < (self_consistent ? 4 : 1); ++pass) {
     const Result r = run(p, zeta);
-    std::printf("zeta %.6f: theta %.2f +- %.2f, xi12 %.6f (xi12/zeta %.4f), %ld collisions\n", zeta, r.theta, r.err, r.xi12, r.xi12 / zeta,
-                r.collisions);
+    std::printf("zeta %.6f: theta %.2f +- %.2f, intruder a2 %.4f, xi12 %.6f (xi12/zeta %.4f), %ld collisions\n", zeta, r.theta, r.err, r.a2,
+                r.xi12, zeta > 0 ? r.xi12 / zeta : 0.0, r.collisions);
     zeta = p.zeta + r.xi12;
     p.seed += 1000, p.theta0 = r.theta;
   }
