@@ -174,9 +174,12 @@ int run(const HcsOptions& o) {
       std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, third->T[k] / third->T[0], third->c[k], third->a3[k]);
     std::printf("  zeta_star %.12g\n", third->zeta_star);
   }
+  // A change above 1% is a basis that has not settled (v2 Fig. 5's intruder at the Santos–Dufty edge: 7%, its θ 14% off a
+  // Monte Carlo of the same problem, README "v2 Fig. 5's intruder"): said in words, not left to the number.
   if (std::isfinite(tracer.theta))
-    std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change from one function fewer %.3g)\n",
-                tracer.theta, tracer.a2, tracer.a3, tracer.change);
+    std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change from one function fewer %.3g%s)\n",
+                tracer.theta, tracer.a2, tracer.a3, tracer.change,
+                tracer.change > 1e-2 ? ": NOT settled, the basis cannot hold this distribution; do not use this T_ratio" : "");
   if (trunc)
     std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
                 eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());

@@ -266,6 +266,18 @@ TEST_CASE("granmix hcs: second-Sonine a2 and a3 of one species - and the one-spe
   CHECK(text.output.find("one-species proxy") != std::string::npos);
 }
 
+TEST_CASE("granmix hcs: an unsettled converged tracer temperature is said to be unsettled", "[compare]") {
+  // v2 Fig. 5's intruder (Santos–Dufty edge): the 8-function θ changes by 7% from 7 functions, and a Monte Carlo of the
+  // same problem lies 14% below it (README); an ordinary intruder (m₂ = 10) settles to 1.3e-4 and gets no warning.
+  const auto edge = test::run_granmix("hcs --mass 1,100 --diameter 1,4.641588833612779 --density 0.1,0.00001 --eps 0.5");
+  REQUIRE(edge.code == 0);
+  CHECK(edge.output.find("NOT settled") != std::string::npos);
+  const auto ordinary = test::run_granmix("hcs --mass 1,10 --diameter 1,2.154 --density 0.1,0.00001 --eps 0.5");
+  REQUIRE(ordinary.code == 0);
+  CHECK(ordinary.output.find("converged: T_ratio") != std::string::npos);
+  CHECK(ordinary.output.find("NOT settled") == std::string::npos);
+}
+
 TEST_CASE("granmix hcs - MG form: gamma of MG Fig. 1 at the Maxwellian level", "[compare]") {
   const auto r = test::run_granmix("hcs --mu 10 --delta 2 --w 1 --alpha 0.5 --json");
   INFO(r.output);
