@@ -9,8 +9,8 @@
 // solved without the Sonine truncation and D_converged_change, its change from one basis function fewer
 // (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~1 ms per species and partner),
 // T_ratio_tracer_converged (binaries: species 2 as an intruder in species 1's own HCS, its stationary distribution
-// without the Sonine truncation, theory/tracer_temperature_galerkin.hpp) and T_ratio_tracer_converged_change (one
-// basis function fewer: large where no Sonine-like shape holds, near the Santos–Dufty edge), tau0 = 2/ξ
+// without the Sonine truncation on a speed grid, theory/tracer_temperature.hpp) and T_ratio_tracer_converged_change
+// (the grid's own estimate: a step 3/2 as long), tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
@@ -34,7 +34,7 @@
 #include "theory/sonine_hcs.hpp"
 #include "theory/sonine_truncation.hpp"
 #include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/tracer_temperature_galerkin.hpp"
+#include "theory/tracer_temperature.hpp"
 
 namespace granmix::compare {
 
@@ -118,12 +118,12 @@ int run(const HcsOptions& o) {
       converged[k] = c.factor;
       if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(c);
     }
-  // A binary's species 2 as a tracer (NaN where its stationary problem has no solution in the basis).
+  // A binary's species 2 as a tracer (NaN where its stationary problem has no solution).
   theory::TracerTemperature tracer;
   if (mix.size() == 2) {
     try {
       tracer = theory::converged_tracer_temperature(rates);
-    } catch (const NumericalError&) {  // the basis temperature did not settle: omitted
+    } catch (const NumericalError&) {  // the grid did not settle on θ: omitted
     }
   }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
@@ -174,12 +174,9 @@ int run(const HcsOptions& o) {
       std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, third->T[k] / third->T[0], third->c[k], third->a3[k]);
     std::printf("  zeta_star %.12g\n", third->zeta_star);
   }
-  // A change above 1% is a basis that has not settled (v2 Fig. 5's intruder at the Santos–Dufty edge: 7%, its θ 14% off a
-  // Monte Carlo of the same problem, README "v2 Fig. 5's intruder"): said in words, not left to the number.
   if (std::isfinite(tracer.theta))
-    std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change from one function fewer %.3g%s)\n",
-                tracer.theta, tracer.a2, tracer.a3, tracer.change,
-                tracer.change > 1e-2 ? ": NOT settled, the basis cannot hold this distribution; do not use this T_ratio" : "");
+    std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change with a step 3/2 as long %.3g)\n",
+                tracer.theta, tracer.a2, tracer.a3, tracer.change);
   if (trunc)
     std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
                 eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());

@@ -44,17 +44,17 @@ const Rules& finest_rules() { return rules(tiers[0].hermite, tiers[0].laguerre);
 
 constexpr std::size_t max_basis = 16;
 
-// Rows L[m·count + p] = L_m^(α)(s·x_p), m < modes (α = 3/2, s = 1: the recurrence of sonine_vector_basis), run over
-// all points at once (independent points in the inner loop, so it pipelines and vectorises).
-void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L, double alpha = 1.5, double s = 1.0) {
+// Rows L[m·count + p] = L_m^(3/2)(x_p), m < modes: the recurrence of sonine_vector_basis run over all points at once
+// (independent points in the inner loop, so it pipelines and vectorises).
+void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L) {
   for (std::size_t p = 0; p < count; ++p) L[p] = 1.0;
   if (modes > 1)
-    for (std::size_t p = 0; p < count; ++p) L[count + p] = 1.0 + alpha - x[p] * s;
+    for (std::size_t p = 0; p < count; ++p) L[count + p] = 2.5 - x[p];
   for (std::size_t n = 1; n + 1 < modes; ++n) {
-    const double a = 2.0 * double(n) + 1.0 + alpha, b = double(n) + alpha, inv = 1.0 / double(n + 1);
+    const double a = 2.0 * double(n) + 2.5, b = double(n) + 1.5, inv = 1.0 / double(n + 1);
     const double *Ln = L + n * count, *Lm = L + (n - 1) * count;
     double* Lp = L + (n + 1) * count;
-    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p] * s) * Ln[p] - b * Lm[p]) * inv;
+    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p]) * Ln[p] - b * Lm[p]) * inv;
   }
 }
 
@@ -78,12 +78,6 @@ RadialBasis sonine_radial_basis(std::size_t modes) {
             if (xdB)
               for (std::size_t m = 0; m < modes; ++m) x_derivative_row(B, count, m, nullptr, xdB + m * count);
           }};
-}
-
-RadialBasis density_radial_basis(std::size_t size, double lambda) {
-  if (size < 1 || size > max_basis) throw std::invalid_argument("density_radial_basis: 1 to 16 functions");
-  if (!(lambda > 0.0 && std::isfinite(lambda))) throw std::invalid_argument("density_radial_basis: lambda must be positive");
-  return {size, [size, s = 1.0 / lambda](const double* x, std::size_t count, double* B, double*) { laguerre_rows(x, count, size, B, 0.5, s); }};
 }
 
 RadialBasis collision_weighted_basis(std::size_t size, double x0) {
@@ -114,7 +108,7 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
 }
 
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
-                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out, TestForm form) {
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out) {
   const model::Mixture& mix = rates.mixture();
   const double s = mix.sigma(k, i), weight = mix[i].density * s * s * rates.chi(k, i);
   if (weight == 0.0) return;
@@ -128,8 +122,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   bool shaped = false;  // a Maxwellian partner alone: no shape factors to evaluate
   for (std::size_t j = 0; j < count; ++j) shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
-  // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)]
-  // (the density form: L_p = w_p [B(c_p²) − B(c_p′²)]).
+  // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
   const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
@@ -151,10 +144,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
         const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
         x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
-        if (form == TestForm::current)
-          wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
-        else
-          wx[p] = w, wcc[p] = w;  // the scalar B_m(c²) − B_m(c′²)
+        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
       }
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);

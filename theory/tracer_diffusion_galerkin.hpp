@@ -52,7 +52,6 @@ struct RadialBasis {
   std::size_t hermite_points = 60, laguerre_points = 36;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
-RadialBasis density_radial_basis(std::size_t size, double lambda);  // L_q^(1/2)(x/λ): a tracer's own distribution (xdB not given)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
 // x₀ is small, the light species): 60 × 36 below x₀ = 1.5, 40 × 24 from 1.5, 30 × 16 from 4, 20 × 12 from 15. Each
 // pair source within 1.6e-5 of its largest entry of the 60 × 36 rule's (tests/theory/test_tracer_diffusion_galerkin.cpp); in the
@@ -77,13 +76,9 @@ struct PartnerShape {
   double one = 1.0, a2 = 0.0, a3 = 0.0;
 };
 // the collisions of species k (its tracer at θ_k = T_k/m_k) with partner i at θ_i, for each of `count` partner shapes:
-// out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k) — the
-// current form of the diffusion problem; with TestForm::density the scalar ⟨B_n (−L†_i) B_m⟩_w of the tracer's own
-// distribution (tracer_temperature_galerkin.hpp).
-enum class TestForm { current, density };
+// out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k);
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
-                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out,
-                         TestForm form = TestForm::current);
+                         double weight_temperature, const PartnerShape* shapes, std::size_t count, Eigen::MatrixXd* out);
 // the averages that do not depend on the state: M, the scaling matrix S_nm = ⟨c² B_n (B_m + 2c² B_m′)⟩_w (A gets
 // −(ζ/2)S) and r = r[0] + a_k2 r[1] + a_k3 r[2] over f_k.
 struct GalerkinAverages {

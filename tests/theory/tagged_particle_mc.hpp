@@ -1,7 +1,7 @@
 #pragma once
 // A Monte Carlo of the tagged-particle (Boltzmann–Lorentz) problem, written independently of theory/: the check of the
 // tracer problems' diffusion coefficients (test_sonine2_diffusion.cpp) and stationary temperatures
-// (test_tracer_temperature_galerkin.cpp).
+// (test_tracer_temperature.cpp).
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -25,7 +25,7 @@ struct Partner {
   double weight, sd, beta;  // n_i σ_ki² χ_ki, √(T_i/m_i), μ_ik(1+ε_ki)
 };
 // u2: the stationary ⟨u²⟩ over the same grid points (3T_k/m_k of the tracer's own stationary state: with ζ the
-// bath's cooling rate, the tracer limit's intruder temperature; tests/theory/test_tracer_temperature_galerkin.cpp).
+// bath's cooling rate, the tracer limit's intruder temperature; tests/theory/test_tracer_temperature.cpp).
 struct McDiffusion {
   double D = 0, err = 0;
   double u2 = 0, u2_err = 0;

@@ -1,0 +1,175 @@
+#include "tracer_temperature.hpp"
+
+#include <Eigen/Dense>
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "model/errors.hpp"
+#include "sonine_hcs.hpp"
+#include "sonine_polynomials.hpp"
+#include "sonine_quadrature.hpp"
+#include "sonine_tracer.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+constexpr double domain_widths = 7.0;   // U in units of √(θ/m₂)
+constexpr double steps_per_width = 10;  // knots per √(θ/m₂)
+constexpr std::size_t gas_points = 16;  // the collision quadrature's size (see the header), and its coarse check's
+constexpr std::size_t coarse_gas_points = 8;
+
+// The cardinal cubic B-spline on [0, 4] and its derivative.
+double spline(double x) {
+  if (x <= 0.0 || x >= 4.0) return 0.0;
+  if (x > 2.0) x = 4.0 - x;
+  if (x < 1.0) return x * x * x / 6.0;
+  x -= 1.0;
+  return (1.0 + 3.0 * x + 3.0 * x * x - 3.0 * x * x * x) / 6.0;
+}
+double spline_slope(double x) {
+  if (x <= 0.0 || x >= 4.0) return 0.0;
+  const double s = x > 2.0 ? -1.0 : 1.0;
+  if (x > 2.0) x = 4.0 - x;
+  if (x < 1.0) return s * x * x / 2.0;
+  x -= 1.0;
+  return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
+}
+
+GaussRule legendre(std::size_t n, double a, double b) {
+  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
+  if (t == nullptr) throw NumericalError("tracer temperature: gsl_integration_glfixed_table_alloc failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    double x = 0.0, w = 0.0;
+    if (gsl_integration_glfixed_point(a, b, j, &x, &w, t) != 0) {
+      gsl_integration_glfixed_table_free(t);
+      throw NumericalError("tracer temperature: gsl_integration_glfixed_point failed");
+    }
+    r.x.push_back(x), r.weight.push_back(w);
+  }
+  gsl_integration_glfixed_table_free(t);
+  return r;
+}
+
+struct Problem {
+  double m2, sd_gas, beta, rate, zeta;  // rate = n₁σ₁₂²χ₁₂
+  PartnerShape gas;
+};
+
+struct Moments {
+  double theta, a2, a3;
+};
+
+// The collision quadrature of n points in w_z and |w_⊥|², n/2 in cos θ of σ̂, 3n/4 in its azimuth.
+struct CollisionRule {
+  GaussRule wz, wp, cs;
+  std::size_t azimuths;
+  explicit CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)), azimuths(3 * n / 4) {}
+};
+
+// The stationary speed density on K knot intervals of [0, U]; θ and the cumulants from its moments.
+Moments solve(const Problem& p, double U, std::size_t K, const CollisionRule& rule) {
+  static const GaussRule uq = legendre(6, 0.0, 1.0);
+  const GaussRule &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
+  const std::size_t azimuths = rule.azimuths;
+  const double h = U / double(K);
+  const std::size_t nb = K + 3;  // N_j(u) = spline(u/h − j + 3), j = 0 … K + 2
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(nb), Eigen::Index(nb));
+  Eigen::VectorXd mass = Eigen::VectorXd::Zero(Eigen::Index(nb)), m2 = mass, m4 = mass, m6 = mass;
+  std::vector<double> C(nb);
+  for (std::size_t i = 0; i < K; ++i)
+    for (std::size_t q = 0; q < uq.x.size(); ++q) {
+      const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
+      // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]
+      std::fill(C.begin(), C.end(), 0.0);
+      for (std::size_t a = 0; a < wz.x.size(); ++a)
+        for (std::size_t b = 0; b < wp.x.size(); ++b) {
+          const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
+          const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
+          const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
+          const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
+          if (g == 0.0) continue;
+          const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
+          const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(azimuths);
+          for (std::size_t c = 0; c < cs.x.size(); ++c) {
+            const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
+            double lost = 0.0;
+            for (std::size_t f = 0; f < azimuths; ++f) {
+              const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(azimuths), cp = std::cos(phi), sp = std::sin(phi);
+              const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u - kick * (st * cp * e1[1] + ct * e3[1]);
+              const double s = std::sqrt(vx * vx + vy * vy + vz * vz) / h;
+              const auto j0 = std::size_t(s);
+              for (std::size_t j = j0; j <= j0 + 3 && j < nb; ++j) C[j] += w * spline(s - double(j) + 3.0);
+              lost += w;
+            }
+            for (std::size_t j = i; j <= i + 3; ++j) C[j] -= lost * spline(u / h - double(j) + 3.0);
+          }
+        }
+      for (std::size_t j = i; j <= i + 3; ++j) {  // trial functions nonzero at u
+        const double Nj = spline(u / h - double(j) + 3.0) * wu;
+        const auto J = Eigen::Index(j);
+        mass[J] += Nj, m2[J] += Nj * u * u, m4[J] += Nj * std::pow(u, 4), m6[J] += Nj * std::pow(u, 6);
+        for (std::size_t m = 0; m < nb; ++m) A(Eigen::Index(m), J) += Nj * (C[m] + 0.5 * p.zeta * u * spline_slope(u / h - double(m) + 3.0) / h);
+      }
+    }
+  // The tests sum to ψ = 1 (partition of unity), whose equation is 0 = 0: the last one gives way to ∫P = 1.
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(nb));
+  A.row(Eigen::Index(nb - 1)) = mass.transpose(), rhs[Eigen::Index(nb - 1)] = 1.0;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  if (!lu.isInvertible()) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0};
+  const Eigen::VectorXd P = lu.solve(rhs);
+  const double u2 = m2.dot(P), u4 = m4.dot(P), u6 = m6.dot(P);
+  // Cumulants at the solution's own temperature: c² = u² m₂/(2θ), ⟨c²⟩ = 3/2.
+  const double theta = p.m2 * u2 / 3.0, s = p.m2 / (2.0 * theta), x2 = u4 * s * s, x3 = u6 * s * s * s;
+  return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0)};
+}
+
+}  // namespace
+
+TracerTemperature converged_tracer_temperature(const CollisionRates& rates, double zeta1, const PartnerShape& gas, double theta_start) {
+  if (rates.size() != 2) throw std::invalid_argument("converged tracer temperature: needs exactly two species (gas, intruder)");
+  if (rates.law().is_viscoelastic()) throw std::invalid_argument("converged tracer temperature: constant restitution only");
+  if (!(theta_start > 0.0 && std::isfinite(theta_start))) throw std::invalid_argument("converged tracer temperature: theta_start must be positive");
+  if (!(zeta1 >= 0.0 && std::isfinite(zeta1))) throw std::invalid_argument("converged tracer temperature: zeta1 must be >= 0");
+  const model::Mixture& mix = rates.mixture();
+  const double s = mix.sigma(1, 0), m1 = mix[0].mass, m2 = mix[1].mass;
+  const Problem p{m2, std::sqrt(1.0 / m1), m1 * (1.0 + rates.law().eps(1, 0)) / (m1 + m2), mix[0].density * s * s * rates.chi(1, 0), zeta1, gas};
+  static const CollisionRule fine(gas_points), coarse(coarse_gas_points);
+  auto at = [&](double theta, double step_scale, const CollisionRule& rule) {
+    const double width = std::sqrt(theta / m2);
+    return solve(p, domain_widths * width, std::size_t(std::ceil(domain_widths * steps_per_width / step_scale)), rule);
+  };
+  double theta = theta_start;
+  for (int pass = 0; pass < 30; ++pass) {
+    const Moments r = at(theta, 1.0, fine);
+    if (!(r.theta > 0.0 && std::isfinite(r.theta))) return {};
+    const bool settled = std::abs(r.theta / theta - 1.0) < 1e-6;
+    theta = r.theta;
+    if (!settled) continue;
+    TracerTemperature out{r.theta, r.a2, r.a3, std::numeric_limits<double>::quiet_NaN()};
+    out.change = std::max(std::abs(at(theta, 1.5, fine).theta / r.theta - 1.0), std::abs(at(theta, 1.0, coarse).theta / r.theta - 1.0));
+    return out;
+  }
+  throw NumericalError("converged tracer temperature: the speed grid did not settle on θ in 30 passes (theta " + std::to_string(theta) + ")");
+}
+
+TracerTemperature converged_tracer_temperature(const CollisionRates& rates) {
+  if (rates.size() != 2) throw std::invalid_argument("converged tracer temperature: needs exactly two species (gas, intruder)");
+  const model::Restitution& law = rates.law();
+  if (law.is_viscoelastic()) return {};
+  const model::Mixture& mix = rates.mixture();
+  const TracerLimit start = sonine_tracer_limit(rates, {true, 1});
+  // The gas alone (the tracer limit drops the intruders' collisions with it): its first-Sonine c₁ at ε₁₁, χ₁₁.
+  const SonineHcs gas = sonine_hcs(model::Mixture({mix[0]}), model::Restitution::constant(1, law.eps(0, 0)), {{rates.chi(0, 0)}});
+  const double zeta1 = std::isfinite(start.tau0) ? 2.0 / start.tau0 : 0.0;  // ξ₁₁(1 + 3c₁/32); 0 for an elastic gas
+  return converged_tracer_temperature(rates, zeta1, {1.0, 0.5 * gas.c[0], 0.0}, start.theta);
+}
+
+}  // namespace granmix::theory

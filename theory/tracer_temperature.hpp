@@ -1,0 +1,45 @@
+#pragma once
+// The intruder's homogeneous cooling state in the tracer limit without the Sonine truncation (issue 12): species 0
+// the gas (its own HCS: cooling rate ζ₁, Sonine shape a₂, a₃), species 1 an intruder with n₁ → 0. In the gas's scaled
+// frame (T₁ = 1 at the reference time, velocities fixed while the gas cools: dv/ds = (ζ₁/2)v between collisions) the
+// intruder's distribution is stationary:
+//   (ζ₁/2) ∂_v·(v φ) = J[φ; f_gas],
+// J the inelastic Boltzmann–Lorentz operator (hard spheres, constant ε): collisions with gas particles w at the rate
+// n₁σ₁₂²χ₁₂ (g·σ̂)Θ(g·σ̂) dσ̂, g = v − w, v′ = v − μ(1+ε)(g·σ̂)σ̂, μ = m₁/(m₁ + m₂), the gas f_M(w)(1 + a₂S₂ + a₃S₃).
+// φ is isotropic; its speed density P(u) is solved in weak form, for every test function ψ(u):
+//   ∫ P(u) [ (ζ₁/2) u ψ′(u) + ∫dw f_gas(w) ∫dσ̂ n₁σ₁₂²χ₁₂ (g·σ̂)Θ [ψ(|v′|) − ψ(u)] ] du = 0,   ∫P = 1,
+// with P and ψ in the same uniform cubic B-splines on [0, U] (C², so the quadrature over the collisions, whose
+// post-collision speeds cross the knots, stays accurate). Quadratures: per knot interval 6 Gauss–Legendre points in
+// u; given u (along z) the gas's w_z by 16 Gauss–Hermite points, |w_⊥|² by 16 Gauss–Laguerre points (w in the xz
+// plane: the problem is symmetric about u), σ̂ about ĝ by 8 Gauss–Legendre points in cos θ and 12 in its azimuth
+// (`change` below says how far that is converged).
+// θ = T₂/T₁ = m₂⟨u²⟩/3; the grid follows it: U = 7 √(θ/m₂), step √(θ/m₂)/10, solved again until θ moves by < 1e-6.
+// Why not a Sonine or Gaussian-weighted basis: a heavy intruder near the Santos–Dufty edge has a flat-topped
+// distribution (v2 Fig. 5, m₂/m₁ = 100, ε = 0.5: a₂ = −0.38), which Laguerre polynomials under a Maxwellian do not
+// settle on (3–8 functions: θ = 497 … 730); here θ = 638.68, against 638.8 ± 0.6 of a Monte Carlo of the same problem
+// (scripts/tracer_intruder_mc.cpp) and the first Sonine's 504.6 (README, "v2 Fig. 5's intruder").
+#include <limits>
+
+#include "collision_rates.hpp"
+#include "tracer_diffusion_galerkin.hpp"
+
+namespace granmix::theory {
+
+struct TracerTemperature {
+  double theta = std::numeric_limits<double>::quiet_NaN();  // T₂/T₁ (NaN: no stationary solution)
+  double a2 = 0.0, a3 = 0.0;  // the intruder's Sonine coefficients (its cumulants), at its own temperature
+  // The solver's own error estimate, the larger of |θ′ − θ|/θ with a step 3/2 as long and with the collision quadrature
+  // of half the points (8: it converges algebraically where the jumps in speed are comparable to the step, a heavy
+  // intruder near equipartition — elastic m₂/m₁ = 100: θ − 1 = −7.8e-4 at 16 points, −4.2e-3 at 8).
+  double change = std::numeric_limits<double>::quiet_NaN();
+};
+
+// rates: the gas (0) and the intruder (1); zeta1 the gas's cooling rate at T₁ = 1, gas its shape; theta_start a first
+// guess of θ (the paper's or the first Sonine's). Throws NumericalError where the grid does not settle on a θ.
+TracerTemperature converged_tracer_temperature(const CollisionRates& rates, double zeta1, const PartnerShape& gas, double theta_start);
+// The same with the gas of the kinetic tracer form (sonine_tracer.hpp): its one-species first-Sonine HCS, a₂ = c₁/2
+// (van Noije–Ernst) and ζ₁ = ξ₁₁(1 + 3c₁/32); started from that form's θ. Constant restitution only (a viscoelastic
+// gas has no settled state): NaN otherwise.
+TracerTemperature converged_tracer_temperature(const CollisionRates& rates);
+
+}  // namespace granmix::theory
