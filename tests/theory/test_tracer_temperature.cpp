@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <vector>
 
@@ -21,6 +22,26 @@ namespace {
 
 // Gas m = 1, σ = 1, n = 0.1; an intruder of the same material (σ ∝ m^(1/3)) at n → 0.
 CollisionRates intruder(double m2, double eps) { return test::constant_rates({{1, 1, 0.1}, {m2, std::cbrt(m2), 1e-9}}, eps); }
+
+// The gas Maxwellian at T₁ = 1 cooling at its Maxwellian ξ₁₁ (so that the Monte Carlo needs no shaped partners): the
+// grid's θ, and the tagged-particle Monte Carlo's, θ = m₂⟨u²⟩/3 of the intruder's stationary state in the gas's
+// scaled frame, over `correlation_times` of its velocity.
+struct MaxwellGasCheck {
+  double paper, theta, change, a2, mc, err;
+  long collisions;
+};
+MaxwellGasCheck maxwell_gas_check(double m2, double eps, double correlation_times, std::uint64_t seed) {
+  const CollisionRates r = intruder(m2, eps);
+  const TracerLimit paper = tracer_limit(r);
+  const double zeta = 2.0 / paper.tau0;
+  const TracerTemperature t = converged_tracer_temperature(r, zeta, {1.0, 0.0, 0.0}, paper.theta);
+  const double s12 = r.mixture().sigma(1, 0), mu = 1.0 / (1.0 + m2);
+  const std::vector<test::Partner> gas = {{0.1 * s12 * s12 * r.chi(1, 0), 1.0, mu * (1.0 + eps)}};
+  const double T[2] = {1.0, t.theta};
+  const test::McDiffusion mc =
+      test::tagged_particle_mc(gas, zeta, std::sqrt(t.theta / m2), 1.0 / r.inv_tau_v_species(1, T), correlation_times, seed);
+  return {paper.theta, t.theta, t.change, t.a2, mc.u2 * m2 / 3.0, mc.u2_err * m2 / 3.0, mc.collisions};
+}
 
 }  // namespace
 
@@ -54,23 +75,13 @@ TEST_CASE("tracer temperature: converged against a Monte Carlo of the tagged int
   // The gas Maxwellian at T₁ = 1 cooling at its Maxwellian ξ₁₁ (so that the Monte Carlo needs no shaped partners); the
   // intruder's stationary ⟨u²⟩ = 3θ/m₂ in the gas's scaled frame. Discriminating: the Monte Carlo resolves the gap
   // between the converged θ and the Maxwellian intruder's (v1 (A2)'s balance), and sits on the converged one.
-  const double m2 = 10.0, eps = 0.5;
-  const CollisionRates r = intruder(m2, eps);
-  const TracerLimit paper = tracer_limit(r);
-  const double zeta = 2.0 / paper.tau0;
-  const TracerTemperature t = converged_tracer_temperature(r, zeta, {1.0, 0.0, 0.0}, paper.theta);
-  const double s12 = r.mixture().sigma(1, 0), mu = 1.0 / (1.0 + m2);
-  const std::vector<test::Partner> gas = {{0.1 * s12 * s12 * r.chi(1, 0), 1.0, mu * (1.0 + eps)}};
-  const double T[2] = {1.0, t.theta};
-  const test::McDiffusion mc =
-      test::tagged_particle_mc(gas, zeta, std::sqrt(t.theta / m2), 1.0 / r.inv_tau_v_species(1, T), 2e5, 31);
-  const double theta_mc = mc.u2 * m2 / 3.0, err = mc.u2_err * m2 / 3.0;
+  const MaxwellGasCheck c = maxwell_gas_check(10.0, 0.5, 2e5, 31);
   std::printf("intruder m = 10, eps = 0.5, Maxwellian gas: theta Maxwellian %.5f, converged %.5f (change %.1e, a2 %.4f), "
               "Monte Carlo %.5f +- %.5f (%ld collisions), z %.2f\n",
-              paper.theta, t.theta, t.change, t.a2, theta_mc, err, mc.collisions, (theta_mc - t.theta) / err);
-  CHECK(t.change < 1e-3);
-  CHECK(4.0 * err < std::abs(t.theta - paper.theta));
-  CHECK(std::abs(theta_mc - t.theta) < 4.0 * err);
+              c.paper, c.theta, c.change, c.a2, c.mc, c.err, c.collisions, (c.mc - c.theta) / c.err);
+  CHECK(c.change < 1e-3);
+  CHECK(4.0 * c.err < std::abs(c.theta - c.paper));
+  CHECK(std::abs(c.mc - c.theta) < 4.0 * c.err);
 }
 
 TEST_CASE("tracer temperature: v2 Fig. 5's intruder at the Santos-Dufty edge against a Monte Carlo", "[theory]") {
@@ -80,23 +91,13 @@ TEST_CASE("tracer temperature: v2 Fig. 5's intruder at the Santos-Dufty edge aga
   // scripts/tracer_intruder_mc.cpp's 638.84 ± 0.64 (1e6 time units, too long for a test; recorded here). The Monte
   // Carlo here (400 correlation times, 2 s) resolves 1.1% (4σ), the recorded one 0.4%: the Maxwellian intruder (412.9
   // here), the first Sonine (504.6) and the Galerkin (730) lie tens of σ off.
-  const double m2 = 100.0, eps = 0.5;
-  const CollisionRates r = intruder(m2, eps);
-  const TracerLimit paper = tracer_limit(r);
-  const double zeta = 2.0 / paper.tau0;
-  const TracerTemperature t = converged_tracer_temperature(r, zeta, {1.0, 0.0, 0.0}, paper.theta);
-  const double s12 = r.mixture().sigma(1, 0), mu = 1.0 / (1.0 + m2);
-  const std::vector<test::Partner> gas = {{0.1 * s12 * s12 * r.chi(1, 0), 1.0, mu * (1.0 + eps)}};
-  const double T[2] = {1.0, t.theta};
-  const test::McDiffusion mc = test::tagged_particle_mc(gas, zeta, std::sqrt(t.theta / m2), 1.0 / r.inv_tau_v_species(1, T), 400, 5);
-  const double theta_mc = mc.u2 * m2 / 3.0, err = mc.u2_err * m2 / 3.0;
-  const TracerTemperature kinetic = converged_tracer_temperature(r);
+  const MaxwellGasCheck c = maxwell_gas_check(100.0, 0.5, 400, 5);
+  const TracerTemperature kinetic = converged_tracer_temperature(intruder(100.0, 0.5));
   std::printf("v2 Fig. 5 intruder, Maxwellian gas: theta Maxwellian %.2f, converged %.3f (a2 %.4f, change %.1e), Monte Carlo %.2f +- %.2f "
               "(%ld collisions), z %.2f; the kinetic form's gas: %.3f (a2 %.4f, change %.1e), Monte Carlo 638.84 +- 0.64\n",
-              paper.theta, t.theta, t.a2, t.change, theta_mc, err, mc.collisions, (theta_mc - t.theta) / err, kinetic.theta, kinetic.a2,
-              kinetic.change);
-  CHECK(std::abs(theta_mc - t.theta) < 4.0 * err);
-  CHECK(4.0 * err < 0.015 * t.theta);
+              c.paper, c.theta, c.a2, c.change, c.mc, c.err, c.collisions, (c.mc - c.theta) / c.err, kinetic.theta, kinetic.a2, kinetic.change);
+  CHECK(std::abs(c.mc - c.theta) < 4.0 * c.err);
+  CHECK(4.0 * c.err < 0.015 * c.theta);
   CHECK(std::abs(kinetic.theta - 638.84) < 4.0 * 0.64);
   CHECK(kinetic.change < 1e-3);
 }
