@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -21,9 +22,10 @@ namespace granmix::theory {
 namespace {
 
 constexpr double domain_widths = 7.0;   // U in units of √(θ/m₂)
-constexpr double steps_per_width = 10;  // knots per √(θ/m₂)
-constexpr std::size_t gas_points = 16;  // the collision quadrature's size (see the header), and its coarse check's
-constexpr std::size_t coarse_gas_points = 8;
+constexpr double steps_per_width = 8;   // knots per √(θ/m₂)
+constexpr std::size_t gas_points = 12;  // the collision quadrature's size (see the header), and its coarse check's
+constexpr std::size_t coarse_gas_points = 6;
+constexpr std::size_t speed_points = 4;  // Gauss–Legendre points in u per knot interval
 
 // The cardinal cubic B-spline on [0, 4] and its derivative.
 double spline(double x) {
@@ -70,54 +72,88 @@ struct Moments {
 // The collision quadrature of n points in w_z and |w_⊥|², n/2 in cos θ of σ̂, 3n/4 in its azimuth.
 struct CollisionRule {
   GaussRule wz, wp, cs;
-  std::size_t azimuths;
-  explicit CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)), azimuths(3 * n / 4) {}
+  std::vector<double> cos_phi, sin_phi;  // the azimuths' midpoints
+  explicit CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)) {
+    for (std::size_t f = 0; f < 3 * n / 4; ++f) {
+      const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(3 * n / 4);
+      cos_phi.push_back(std::cos(phi)), sin_phi.push_back(std::sin(phi));
+    }
+  }
 };
 
-// The stationary speed density on K knot intervals of [0, U]; θ and the cumulants from its moments.
-Moments solve(const Problem& p, double U, std::size_t K, const CollisionRule& rule) {
-  static const GaussRule uq = legendre(6, 0.0, 1.0);
+// The columns i … i + 3 of the weak form (the trial functions nonzero on knot interval i), rows every test function,
+// and those columns' moments ∫N_j u^(2n) du, n = 0 … 3.
+void interval(const Problem& p, double h, std::size_t i, const CollisionRule& rule, Eigen::Ref<Eigen::MatrixXd> cols, double (&moments)[4][4]) {
+  static const GaussRule uq = legendre(speed_points, 0.0, 1.0);
   const GaussRule &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
-  const std::size_t azimuths = rule.azimuths;
+  const std::size_t azimuths = rule.cos_phi.size(), nb = std::size_t(cols.rows());
+  std::vector<double> C(nb);
+  for (std::size_t q = 0; q < uq.x.size(); ++q) {
+    const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
+    // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]
+    std::fill(C.begin(), C.end(), 0.0);
+    for (std::size_t a = 0; a < wz.x.size(); ++a)
+      for (std::size_t b = 0; b < wp.x.size(); ++b) {
+        const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
+        const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
+        const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
+        const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
+        if (g == 0.0) continue;
+        const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
+        const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(azimuths);
+        for (std::size_t c = 0; c < cs.x.size(); ++c) {
+          const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
+          double lost = 0.0;
+          for (std::size_t f = 0; f < azimuths; ++f) {
+            const double cp = rule.cos_phi[f], sp = rule.sin_phi[f];
+            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u - kick * (st * cp * e1[1] + ct * e3[1]);
+            const double s = std::sqrt(vx * vx + vy * vy + vz * vz) / h;
+            const auto j0 = std::size_t(s);
+            for (std::size_t j = j0; j <= j0 + 3 && j < nb; ++j) C[j] += w * spline(s - double(j) + 3.0);
+            lost += w;
+          }
+          for (std::size_t j = i; j <= i + 3; ++j) C[j] -= lost * spline(u / h - double(j) + 3.0);
+        }
+      }
+    for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
+      const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
+      for (int n = 0; n < 4; ++n) moments[c][n] += Nj * std::pow(u, 2 * n);
+      for (std::size_t m = 0; m < nb; ++m)
+        cols(Eigen::Index(m), Eigen::Index(c)) += Nj * (C[m] + 0.5 * p.zeta * u * spline_slope(u / h - double(m) + 3.0) / h);
+    }
+  }
+}
+
+// The stationary speed density on K knot intervals of [0, U]; θ and the cumulants from its moments. The intervals run
+// on OpenMP threads (one region per solve), each into its own columns, summed in interval order: the same numbers for
+// any thread count.
+Moments solve(const Problem& p, double U, std::size_t K, const CollisionRule& rule) {
   const double h = U / double(K);
   const std::size_t nb = K + 3;  // N_j(u) = spline(u/h − j + 3), j = 0 … K + 2
+  Eigen::MatrixXd blocks = Eigen::MatrixXd::Zero(Eigen::Index(nb), Eigen::Index(4 * K));
+  std::vector<double> moments(16 * K, 0.0);
+  std::vector<std::exception_ptr> failed(K);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t i = 0; i < K; ++i) {
+    try {
+      double m[4][4] = {};
+      interval(p, h, i, rule, blocks.middleCols(Eigen::Index(4 * i), 4), m);
+      for (std::size_t c = 0; c < 4; ++c)
+        for (std::size_t n = 0; n < 4; ++n) moments[16 * i + 4 * c + n] = m[c][n];
+    } catch (...) {
+      failed[i] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
   Eigen::MatrixXd A = Eigen::MatrixXd::Zero(Eigen::Index(nb), Eigen::Index(nb));
   Eigen::VectorXd mass = Eigen::VectorXd::Zero(Eigen::Index(nb)), m2 = mass, m4 = mass, m6 = mass;
-  std::vector<double> C(nb);
   for (std::size_t i = 0; i < K; ++i)
-    for (std::size_t q = 0; q < uq.x.size(); ++q) {
-      const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
-      // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]
-      std::fill(C.begin(), C.end(), 0.0);
-      for (std::size_t a = 0; a < wz.x.size(); ++a)
-        for (std::size_t b = 0; b < wp.x.size(); ++b) {
-          const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
-          const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
-          const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
-          const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
-          if (g == 0.0) continue;
-          const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
-          const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(azimuths);
-          for (std::size_t c = 0; c < cs.x.size(); ++c) {
-            const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
-            double lost = 0.0;
-            for (std::size_t f = 0; f < azimuths; ++f) {
-              const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(azimuths), cp = std::cos(phi), sp = std::sin(phi);
-              const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u - kick * (st * cp * e1[1] + ct * e3[1]);
-              const double s = std::sqrt(vx * vx + vy * vy + vz * vz) / h;
-              const auto j0 = std::size_t(s);
-              for (std::size_t j = j0; j <= j0 + 3 && j < nb; ++j) C[j] += w * spline(s - double(j) + 3.0);
-              lost += w;
-            }
-            for (std::size_t j = i; j <= i + 3; ++j) C[j] -= lost * spline(u / h - double(j) + 3.0);
-          }
-        }
-      for (std::size_t j = i; j <= i + 3; ++j) {  // trial functions nonzero at u
-        const double Nj = spline(u / h - double(j) + 3.0) * wu;
-        const auto J = Eigen::Index(j);
-        mass[J] += Nj, m2[J] += Nj * u * u, m4[J] += Nj * std::pow(u, 4), m6[J] += Nj * std::pow(u, 6);
-        for (std::size_t m = 0; m < nb; ++m) A(Eigen::Index(m), J) += Nj * (C[m] + 0.5 * p.zeta * u * spline_slope(u / h - double(m) + 3.0) / h);
-      }
+    for (std::size_t c = 0; c < 4; ++c) {
+      const auto J = Eigen::Index(i + c);
+      A.col(J) += blocks.col(Eigen::Index(4 * i + c));
+      mass[J] += moments[16 * i + 4 * c], m2[J] += moments[16 * i + 4 * c + 1], m4[J] += moments[16 * i + 4 * c + 2],
+          m6[J] += moments[16 * i + 4 * c + 3];
     }
   // The tests sum to ψ = 1 (partition of unity), whose equation is 0 = 0: the last one gives way to ∫P = 1.
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(nb));
@@ -150,7 +186,7 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates, doub
   for (int pass = 0; pass < 30; ++pass) {
     const Moments r = at(theta, 1.0, fine);
     if (!(r.theta > 0.0 && std::isfinite(r.theta))) return {};
-    const bool settled = std::abs(r.theta / theta - 1.0) < 1e-6;
+    const bool settled = std::abs(r.theta / theta - 1.0) < 1e-5;
     theta = r.theta;
     if (!settled) continue;
     TracerTemperature out{r.theta, r.a2, r.a3, std::numeric_limits<double>::quiet_NaN()};

@@ -9,14 +9,15 @@
 // φ is isotropic; its speed density P(u) is solved in weak form, for every test function ψ(u):
 //   ∫ P(u) [ (ζ₁/2) u ψ′(u) + ∫dw f_gas(w) ∫dσ̂ n₁σ₁₂²χ₁₂ (g·σ̂)Θ [ψ(|v′|) − ψ(u)] ] du = 0,   ∫P = 1,
 // with P and ψ in the same uniform cubic B-splines on [0, U] (C², so the quadrature over the collisions, whose
-// post-collision speeds cross the knots, stays accurate). Quadratures: per knot interval 6 Gauss–Legendre points in
-// u; given u (along z) the gas's w_z by 16 Gauss–Hermite points, |w_⊥|² by 16 Gauss–Laguerre points (w in the xz
-// plane: the problem is symmetric about u), σ̂ about ĝ by 8 Gauss–Legendre points in cos θ and 12 in its azimuth
+// post-collision speeds cross the knots, stays accurate). Quadratures: per knot interval 4 Gauss–Legendre points in
+// u; given u (along z) the gas's w_z by 12 Gauss–Hermite points, |w_⊥|² by 12 Gauss–Laguerre points (w in the xz
+// plane: the problem is symmetric about u), σ̂ about ĝ by 6 Gauss–Legendre points in cos θ and 9 in its azimuth
 // (`change` below says how far that is converged).
-// θ = T₂/T₁ = m₂⟨u²⟩/3; the grid follows it: U = 7 √(θ/m₂), step √(θ/m₂)/10, solved again until θ moves by < 1e-6.
+// θ = T₂/T₁ = m₂⟨u²⟩/3; the grid follows it: U = 7 √(θ/m₂), step √(θ/m₂)/8, solved again until θ moves by < 1e-5.
+// Cost ~0.05–0.15 s (the knot intervals on OpenMP threads; the same numbers for any thread count).
 // Why not a Sonine or Gaussian-weighted basis: a heavy intruder near the Santos–Dufty edge has a flat-topped
 // distribution (v2 Fig. 5, m₂/m₁ = 100, ε = 0.5: a₂ = −0.38), which Laguerre polynomials under a Maxwellian do not
-// settle on (3–8 functions: θ = 497 … 730); here θ = 638.68, against 638.8 ± 0.6 of a Monte Carlo of the same problem
+// settle on (3–8 functions: θ = 497 … 730); here θ = 638.70, against 638.8 ± 0.6 of a Monte Carlo of the same problem
 // (scripts/tracer_intruder_mc.cpp) and the first Sonine's 504.6 (README, "v2 Fig. 5's intruder").
 #include <limits>
 
@@ -29,8 +30,8 @@ struct TracerTemperature {
   double theta = std::numeric_limits<double>::quiet_NaN();  // T₂/T₁ (NaN: no stationary solution)
   double a2 = 0.0, a3 = 0.0;  // the intruder's Sonine coefficients (its cumulants), at its own temperature
   // The solver's own error estimate, the larger of |θ′ − θ|/θ with a step 3/2 as long and with the collision quadrature
-  // of half the points (8: it converges algebraically where the jumps in speed are comparable to the step, a heavy
-  // intruder near equipartition — elastic m₂/m₁ = 100: θ − 1 = −7.8e-4 at 16 points, −4.2e-3 at 8).
+  // of half the points (6: it converges algebraically where the jumps in speed are comparable to the step, a heavy
+  // intruder near equipartition — elastic m₂/m₁ = 100: θ − 1 = −1.6e-3 at 12 points, estimate 6.6e-3).
   double change = std::numeric_limits<double>::quiet_NaN();
 };
 
