@@ -10,7 +10,8 @@
 // (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~1 ms per species and partner),
 // T_ratio_tracer_converged (binaries: species 2 as an intruder in species 1's own HCS, its stationary distribution
 // without the Sonine truncation on a speed grid, theory/tracer_temperature.hpp) and T_ratio_tracer_converged_change
-// (the grid's own estimate: a step 3/2 as long), tau0 = 2/ξ
+// (the grid's own estimate: a step 3/2 as long), T_ratio_intruder_converged with its _change and
+// xi12_intruder_converged (the same at species 2's own density, its heating of species 1 self-consistent), tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
 // one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
@@ -119,11 +120,13 @@ int run(const HcsOptions& o) {
       if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(c);
     }
   // A binary's species 2 as a tracer (NaN where its stationary problem has no solution).
-  theory::TracerTemperature tracer;
+  // And at its own density, its heating of species 1 included (theory/tracer_temperature.hpp).
+  theory::TracerTemperature tracer, intruder;
   if (mix.size() == 2) {
     try {
       tracer = theory::converged_tracer_temperature(rates);
-    } catch (const NumericalError&) {  // the grid did not settle on θ: omitted
+      intruder = theory::converged_intruder_temperature(rates);
+    } catch (const NumericalError&) {  // the grid or the gas's rate did not settle: omitted
     }
   }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
@@ -147,6 +150,9 @@ int run(const HcsOptions& o) {
       if (third) s["T_ratio_sonine3"] = third->T[k] / third->T[0], s["c_sonine3"] = third->c[k], s["a3_sonine3"] = third->a3[k];
       if (k == 1 && std::isfinite(tracer.theta))
         s["T_ratio_tracer_converged"] = tracer.theta, s["T_ratio_tracer_converged_change"] = tracer.change;
+      if (k == 1 && std::isfinite(intruder.theta))
+        s["T_ratio_intruder_converged"] = intruder.theta, s["T_ratio_intruder_converged_change"] = intruder.change,
+        s["xi12_intruder_converged"] = intruder.xi12;
       j["species"].push_back(s);
     }
     if (has_tau0) j["tau0"] = d.tau0;
@@ -177,6 +183,9 @@ int run(const HcsOptions& o) {
   if (std::isfinite(tracer.theta))
     std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change with a step 3/2 as long %.3g)\n",
                 tracer.theta, tracer.a2, tracer.a3, tracer.change);
+  if (std::isfinite(intruder.theta))
+    std::printf("species 2 at its density, heating species 1 (xi12 %.6g), converged: T_ratio %.10g (a2 %.6g; change %.3g)\n", intruder.xi12,
+                intruder.theta, intruder.a2, intruder.change);
   if (trunc)
     std::printf("second Sonine, one species at eps = %.8g%s: a2[1] = %.10g  a2[2] = %.10g  a3[2] = %.10g  |a2[2]-a2[1]|/|a2[1]| = %.6g\n",
                 eps_one, mix.size() > 1 ? " (one-species proxy)" : "", trunc->a2_first, trunc->linear.a2, trunc->linear.a3, trunc->a2_relative());

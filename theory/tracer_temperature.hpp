@@ -33,6 +33,10 @@ struct TracerTemperature {
   // of half the points (6: it converges algebraically where the jumps in speed are comparable to the step, a heavy
   // intruder near equipartition — elastic m₂/m₁ = 100: θ − 1 = −1.6e-3 at 12 points, estimate 6.6e-3).
   double change = std::numeric_limits<double>::quiet_NaN();
+  // What the intruders at their density n₂ add to the gas's cooling rate (the gas's energy gains in the same
+  // collisions, per n₁(3/2)T₁): negative where they heat it. Not part of the tracer limit; see
+  // converged_intruder_temperature.
+  double xi12 = 0.0;
 };
 
 // rates: the gas (0) and the intruder (1); zeta1 the gas's cooling rate at T₁ = 1, gas its shape; theta_start a first
@@ -42,5 +46,12 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates, doub
 // (van Noije–Ernst) and ζ₁ = ξ₁₁(1 + 3c₁/32); started from that form's θ. Constant restitution only (a viscoelastic
 // gas has no settled state): NaN otherwise.
 TracerTemperature converged_tracer_temperature(const CollisionRates& rates);
+// The intruders at their own density heat (or cool) the gas: the same problem with the gas cooling at ζ = ζ₁ + ξ₁₂(θ),
+// self-consistent (intruder–intruder collisions and the gas's change of shape left out). v2 Fig. 5 (n₂/n₁ = 1e-4):
+// ξ₁₂/ζ = −4%, and at the Santos–Dufty edge θ is steep in ζ (d ln θ/d ln ζ ≈ 2.4): θ 639 → 580 (Monte Carlo, the same
+// problem: 580.0 ± 0.6; DSMC ≈ 570; README, "v2 Fig. 5's intruder"). Its `change` is the last solve's. NaN where the
+// intruders are more than 10% of the gas's energy budget at the tracer limit's θ (|ξ₁₂| > 0.1 ζ₁: then the gas's shape
+// and their mutual collisions, both left out, matter as much).
+TracerTemperature converged_intruder_temperature(const CollisionRates& rates);
 
 }  // namespace granmix::theory
