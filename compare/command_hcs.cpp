@@ -125,7 +125,7 @@ int run(const HcsOptions& o) {
   if (mix.size() == 2) {
     try {
       tracer = theory::converged_tracer_temperature(rates);
-      intruder = theory::converged_intruder_temperature(rates);
+      intruder = theory::converged_intruder_temperature(rates, tracer);
     } catch (const NumericalError&) {  // the grid or the gas's rate did not settle: omitted
     }
   }

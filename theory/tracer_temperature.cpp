@@ -170,7 +170,8 @@ Moments solve(const Problem& p, double U, std::size_t K, const CollisionRule& ru
   if (!lu.isInvertible()) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0};
   const Eigen::VectorXd P = lu.solve(rhs);
   const double u2 = m2.dot(P), u4 = m4.dot(P), u6 = m6.dot(P);
-  // Cumulants at the solution's own temperature: c² = u² m₂/(2θ), ⟨c²⟩ = 3/2.
+  // Cumulants at the solution's own temperature: c² = u² m₂/(2θ), ⟨c²⟩ = 3/2, a_p = ⟨S_p(c²)⟩/⟨S_p²⟩_M (physics.md §6;
+  // S₂, S₃ of sonine_polynomials.hpp expanded in the moments, ⟨S₂²⟩_M = 15/8, ⟨S₃²⟩_M = 35/16).
   const double theta = p.m2 * u2 / 3.0, s = p.m2 / (2.0 * theta), x2 = u4 * s * s, x3 = u6 * s * s * s;
   return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0), gain.dot(P)};
 }
@@ -231,11 +232,11 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates) {
   return converged_tracer_temperature(rates, gas.zeta1, gas.shape, gas.theta_start);
 }
 
-TracerTemperature converged_intruder_temperature(const CollisionRates& rates) {
+TracerTemperature converged_intruder_temperature(const CollisionRates& rates, const TracerTemperature& tracer) {
   if (rates.size() != 2) throw std::invalid_argument("converged intruder temperature: needs exactly two species (gas, intruder)");
   if (rates.law().is_viscoelastic()) return {};
   const KineticGas gas = kinetic_gas(rates);
-  TracerTemperature t = converged_tracer_temperature(rates, gas.zeta1, gas.shape, gas.theta_start);
+  TracerTemperature t = tracer;
   // Intruders: a small part of the gas's energy budget (else the gas's own shape and the intruders' mutual collisions,
   // both left out here, matter as much): omitted (NaN) above max_heating_share.
   if (!std::isfinite(t.theta) || !(std::abs(t.xi12) <= max_heating_share * gas.zeta1)) return {};

@@ -52,6 +52,7 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates);
 // problem: 580.0 ± 0.6; DSMC ≈ 570; README, "v2 Fig. 5's intruder"). Its `change` is the last solve's. NaN where the
 // intruders are more than 10% of the gas's energy budget at the tracer limit's θ (|ξ₁₂| > 0.1 ζ₁: then the gas's shape
 // and their mutual collisions, both left out, matter as much).
-TracerTemperature converged_intruder_temperature(const CollisionRates& rates);
+// tracer: converged_tracer_temperature(rates), its start (its ξ₁₂ the first step).
+TracerTemperature converged_intruder_temperature(const CollisionRates& rates, const TracerTemperature& tracer);
 
 }  // namespace granmix::theory

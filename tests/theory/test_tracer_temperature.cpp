@@ -107,12 +107,13 @@ TEST_CASE("intruder temperature: v2 Fig. 5's intruders heating the gas, self-con
   // by −9%. scripts/tracer_intruder_mc.cpp self_consistent=1 (four passes, 1e6 time units each): θ = 580.0 ± 0.6 at
   // ξ₁₂ = −0.006915 (recorded here); DSMC about 570. At n₂ → 0 it is the tracer limit's θ.
   const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {100, std::cbrt(100.0), 1e-5}}, 0.5);
-  const TracerTemperature t = converged_intruder_temperature(r), tracer = converged_tracer_temperature(r);
+  const TracerTemperature tracer = converged_tracer_temperature(r), t = converged_intruder_temperature(r, tracer);
   std::printf("v2 Fig. 5 intruders at n2 = 1e-5: theta %.3f (xi12 %.6f, change %.1e); tracer limit %.3f; Monte Carlo 580.0 +- 0.6\n", t.theta,
               t.xi12, t.change, tracer.theta);
   CHECK(std::abs(t.theta - 580.0) < 4.0 * 0.6);
   CHECK(std::abs(t.xi12 / -0.006915 - 1.0) < 0.01);
   CHECK(tracer.theta - t.theta > 40.0);  // the effect is 100 σ of the Monte Carlo
-  const TracerTemperature dilute = converged_intruder_temperature(test::constant_rates({{1, 1, 0.1}, {100, std::cbrt(100.0), 1e-12}}, 0.5));
+  const CollisionRates rare = test::constant_rates({{1, 1, 0.1}, {100, std::cbrt(100.0), 1e-12}}, 0.5);
+  const TracerTemperature dilute = converged_intruder_temperature(rare, converged_tracer_temperature(rare));
   CHECK(std::abs(dilute.theta / tracer.theta - 1.0) < 1e-5);
 }
