@@ -154,21 +154,20 @@ Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
   return t;
 }
 
-// Tracer limit in the level's closure: every curve in closed form (gas: Haff; intruder: θ times Haff), the
-// MSD and the TAMSD from the same velocity correlation (D, τ_v, τ₀).
+// Tracer limit in the level's closure (tracer_form.hpp): the MSD and the TAMSD from the same velocity correlation.
 std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level) {
-  const TracerLimit tl = level.tracer(rates);
-  const double D[2] = {tl.D_gas, tl.D_intruder}, tv[2] = {tl.tau_v_gas, tl.tau_v_intruder};
+  const double t_end = std::max(s.times.back(), s.observables.tamsd ? s.observables.tamsd_measurement_time : 0.0);
+  const std::unique_ptr<TracerForm> form = level.tracer_form(rates, t_end);
   std::vector<Sample> out;
   for (double t : s.times) {
     Sample x;
-    const double haff = std::isfinite(tl.tau0) ? 1.0 / std::pow(1.0 + t / tl.tau0, 2) : 1.0;
-    x.T = {haff, tl.theta * haff};
-    x.t_s = std::isfinite(tl.tau0) ? tl.tau0 * std::log1p(t / tl.tau0) : t;
-    for (int k = 0; k < 2; ++k) {
-      x.msd.push_back(msd_closed(D[k], tv[k], tl.tau0, t));
-      x.D_ratio.push_back(D[k] / D[0]);
-      if (s.observables.tamsd) x.tamsd.push_back(tamsd(D[k], tv[k], tl.tau0, s.observables.tamsd_measurement_time, t));
+    const std::array<double, 2> T = form->temperatures(t);
+    x.T = {T[0], T[1]};
+    x.t_s = form->reduced_time(t);
+    for (std::size_t k = 0; k < 2; ++k) {
+      x.msd.push_back(form->msd(k, t));
+      x.D_ratio.push_back(k == 0 ? 1.0 : form->D_ratio(t));
+      if (s.observables.tamsd) x.tamsd.push_back(form->tamsd(k, s.observables.tamsd_measurement_time, t));
     }
     out.push_back(std::move(x));
   }

@@ -17,6 +17,7 @@
 #include "sonine_tracer.hpp"
 #include "galerkin_decay.hpp"
 #include "tracer_diffusion_galerkin.hpp"
+#include "tracer_temperature.hpp"
 #include "model/errors.hpp"
 
 namespace granmix::theory {
@@ -253,9 +254,31 @@ class ConvergedLevel final : public TheoryLevel {
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return base_.settled_temperatures(rates); }
   SonineHcs hcs(const CollisionRates& rates) const override { return base_.hcs(rates); }
-  TracerLimit tracer(const CollisionRates& rates) const override { return base_.tracer(rates); }
+  // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
+  // tracer_temperature.hpp) as its start, its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant
+  // ε < 1, intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
+  TracerLimit tracer(const CollisionRates& rates) const override {
+    TracerLimit t = base_.tracer(rates);
+    const TracerTemperature c = converged_intruder(rates);
+    if (!std::isfinite(c.theta)) return t;
+    t.theta = c.theta;
+    t.tau_v_intruder = 1.0 / (c.nu - 0.5 * (2.0 / t.tau0 + c.xi12));
+    t.D_intruder = c.theta * t.tau_v_intruder / rates.mixture()[1].mass;
+    return t;
+  }
+  // From that start the intruder relaxes (its shape forms, then θ settles: tracer_relaxation.hpp).
+  std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override {
+    const TracerLimit t = tracer(rates);
+    if (!std::isfinite(converged_intruder(rates).theta)) return closed_tracer_form(t);
+    return relaxing_tracer_form(rates, base_.tracer(rates), t.theta, t_end);
+  }
 
  private:
+  static TracerTemperature converged_intruder(const CollisionRates& rates) {
+    const model::Restitution& law = rates.law();
+    if (rates.size() != 2 || law.is_viscoelastic() || !(law.eps(0, 0) < 1.0)) return {};
+    return converged_intruder_temperature(rates, converged_tracer_temperature(rates));
+  }
   void refuse_beyond_species_limit(const CollisionRates& rates) const {
     // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
     // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
@@ -272,6 +295,8 @@ class ConvergedLevel final : public TheoryLevel {
 };
 
 }  // namespace
+
+std::unique_ptr<TracerForm> TheoryLevel::tracer_form(const CollisionRates& rates, double) const { return closed_tracer_form(tracer(rates)); }
 
 std::string companion_level(const std::string& level, const std::string& correction) {
   if (correction == "paper" || correction == "kinetic") return correction;

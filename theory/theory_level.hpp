@@ -25,6 +25,7 @@
 #include "msd.hpp"
 #include "sonine_hcs.hpp"
 #include "temperature_history.hpp"
+#include "tracer_form.hpp"
 #include "tracer_limit.hpp"
 
 namespace granmix::theory {
@@ -49,8 +50,11 @@ class TheoryLevel {
   // first Sonine for the paper level (the MG figures' theory) and the kinetic level, Sonine order 3 (a₃ too) for
   // kinetic-cooling3.
   virtual SonineHcs hcs(const CollisionRates& rates) const = 0;
-  // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1.
+  // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1: its θ is where the
+  // intruder starts (DSMC's start too).
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
+  // The tracer limit in time to t_end (tracer_form.hpp): closed forms from tracer(rates) unless the level relaxes it.
+  virtual std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const;
 };
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to

@@ -37,7 +37,21 @@ struct TracerTemperature {
   // collisions, per n₁(3/2)T₁): negative where they heat it. Not part of the tracer limit; see
   // converged_intruder_temperature.
   double xi12 = 0.0;
+  // The rate at which the gas's collisions erase the intruder's velocity, averaged over its distribution with weight u²
+  // (tracer_speed_grid.hpp): the initial decay rate of its velocity correlation in the lab frame (the Maxwellian's is v1's
+  // τ_v⁻¹ + ξ₂₁/2, A1, A2).
+  double nu = std::numeric_limits<double>::quiet_NaN();
 };
+
+// The gas of the kinetic tracer form (sonine_tracer.hpp): its one-species first-Sonine HCS (the tracer limit drops the
+// intruders' collisions with it), a₂ = c₁/2 at ε₁₁, χ₁₁, its rate ζ₁ = ξ₁₁(1 + 3c₁/32) at T₁ = 1 (0 for an elastic gas),
+// and that form's θ as a start. Constant restitution.
+struct KineticTracerGas {
+  double zeta1;
+  PartnerShape shape;
+  double theta_start;
+};
+KineticTracerGas kinetic_tracer_gas(const CollisionRates& rates);
 
 // rates: the gas (0) and the intruder (1); zeta1 the gas's cooling rate at T₁ = 1, gas its shape; theta_start a first
 // guess of θ (the paper's or the first Sonine's). Throws NumericalError where the grid does not settle on a θ.

@@ -1,0 +1,44 @@
+#pragma once
+// The intruder's temperature in time without the Sonine truncation (issue 12): the speed grid of tracer_speed_grid.hpp
+// integrated in the gas's scaled time s (ds = √T₁ dt, T₁(0) = 1) from a Maxwellian intruder at θ₀ = T₂/T₁,
+//   gram dP/ds = [collisions + (ζ(s)/2) drift] P,   ζ(s) = ζ₁ + ξ₁₂(P(s)),
+// the gas at its kinetic HCS shape (tracer_temperature.hpp, kinetic_tracer_gas) cooling at ζ₁ plus the intruders'
+// heating of it at their density n₂ (as converged_intruder_temperature, whose θ is the limit s → ∞). Trapezoidal steps
+// h = min(h_max, h₀ + s/20) (h₀ = 1e-3, h_max = 1/(2λ), λ the loss rate of an intruder three thermal speeds out), the
+// ζ of the new step by two fixed-point passes; exact Haff clocks within a step (ζ fixed): T₁ and t.
+// The intruders' mutual collisions matter here although n₂/n₁ = 1e-4: near the Santos–Dufty edge the intruder's velocity
+// correlation decays in the scaled frame at κ = ν − ζ/2 = 7e-4 only (ν ≈ 0.0868, ζ/2 ≈ 0.0861), and the intruders erase
+// each other's velocities at ν₂₂ = 1.8e-3: without them the MSD at t = 8e3 is 4.6% above DSMC (z = −5.6), with them
+// within its error (README, "v2 Fig. 5's intruder").
+// Why: v2 Fig. 5's intruder (m₂/m₁ = 100, ε = 0.5) settles slowly, near the Santos–Dufty edge: DSMC from a Maxwellian
+// intruder at the first Sonine's θ = 504.6 dips to 481 (its flat-topped shape forming) and reaches 575 only at t ≈ 400.
+#include <vector>
+
+#include "collision_rates.hpp"
+
+namespace granmix::theory {
+
+// Per step n (from s[n] to s[n] + h[n]): the clocks at its start and the values at its midpoint.
+struct TracerRelaxation {
+  std::vector<double> h, zeta;  // step length in s and the gas's cooling rate at T₁ = 1 (ζ₁ + ξ₁₂)
+  std::vector<double> theta;    // T₂/T₁
+  std::vector<double> nu;       // the intruder's velocity erasure rate at T₁ = 1: TracerTemperature::nu + ν₂₂ (mutual collisions)
+  std::vector<double> a2;       // its cumulant at its own temperature
+  std::vector<double> theta_start;  // θ at each step's start (one more: the last step's end)
+  // The intruder's MSD from s = 0 and Q = ⟨ΔR·c⟩ (dM/ds = 2Q) at each step's start (one more), from the l = 1 harmonic of
+  // the same equation (tracer_speed_grid.hpp): the displacement-weighted distribution, no assumption on how the velocity
+  // correlation decays.
+  std::vector<double> msd_start, q_start;
+};
+
+// What the intruders at their density n₂ add beyond the tracer limit, to first order in n₂ (both on by default):
+struct RelaxationOptions {
+  bool heating = true;            // their heating of the gas, ξ₁₂ from the gas's energy gains (converged_intruder_temperature)
+  bool mutual_collisions = true;  // their collisions with each other, the partner a Maxwellian at θ (v1 A1, A2 for 22)
+};
+
+// rates: the gas (0) and the intruder (1), constant restitution with ε₁₁ < 1; integrated until the real time t_end.
+// Throws NumericalError where a step's system is singular or θ leaves the grid's range.
+TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, double t_end, RelaxationOptions opt = {});
+
+}  // namespace granmix::theory

@@ -1,0 +1,194 @@
+#include "tracer_speed_grid.hpp"
+
+#include <gsl/gsl_integration.h>
+
+#include <cmath>
+#include <exception>
+#include <numbers>
+
+#include "model/errors.hpp"
+#include "sonine_polynomials.hpp"
+
+namespace granmix::theory {
+
+namespace {
+
+constexpr std::size_t speed_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
+
+// The cardinal cubic B-spline on [0, 4] and its derivative.
+double spline(double x) {
+  if (x <= 0.0 || x >= 4.0) return 0.0;
+  if (x > 2.0) x = 4.0 - x;
+  if (x < 1.0) return x * x * x / 6.0;
+  x -= 1.0;
+  return (1.0 + 3.0 * x + 3.0 * x * x - 3.0 * x * x * x) / 6.0;
+}
+double spline_slope(double x) {
+  if (x <= 0.0 || x >= 4.0) return 0.0;
+  const double s = x > 2.0 ? -1.0 : 1.0;
+  if (x > 2.0) x = 4.0 - x;
+  if (x < 1.0) return s * x * x / 2.0;
+  x -= 1.0;
+  return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
+}
+
+GaussRule legendre(std::size_t n, double a, double b) {
+  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
+  if (t == nullptr) throw NumericalError("tracer speed grid: gsl_integration_glfixed_table_alloc failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    double x = 0.0, w = 0.0;
+    if (gsl_integration_glfixed_point(a, b, j, &x, &w, t) != 0) {
+      gsl_integration_glfixed_table_free(t);
+      throw NumericalError("tracer speed grid: gsl_integration_glfixed_point failed");
+    }
+    r.x.push_back(x), r.weight.push_back(w);
+  }
+  gsl_integration_glfixed_table_free(t);
+  return r;
+}
+
+const GaussRule& speed_rule() {
+  static const GaussRule uq = legendre(speed_points, 0.0, 1.0);
+  return uq;
+}
+
+// The integrals of the trial functions i … i + 3 (nonzero on knot interval i) against 1, u², u⁴, u⁶, G, H, u.
+struct IntervalMoments {
+  double m[4][7] = {};
+};
+
+// Knot interval i: the collision, drift and Gram columns of its four trial functions (rows every test function).
+void interval(const SpeedGridProblem& p, double h, std::size_t i, const CollisionRule& rule, Eigen::Ref<Eigen::MatrixXd> coll,
+              Eigen::Ref<Eigen::MatrixXd> coll1, Eigen::Ref<Eigen::MatrixXd> drift, Eigen::Ref<Eigen::MatrixXd> gram,
+              Eigen::Ref<Eigen::MatrixXd> gram_u, IntervalMoments& out) {
+  const GaussRule &uq = speed_rule(), &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
+  const std::size_t azimuths = rule.cos_phi.size(), nb = std::size_t(coll.rows());
+  std::vector<double> C(nb), C1(nb);
+  for (std::size_t q = 0; q < uq.x.size(); ++q) {
+    const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
+    // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]; G(u), H(u) the same average of the gas's energy gain and of u·Δv.
+    std::fill(C.begin(), C.end(), 0.0);
+    std::fill(C1.begin(), C1.end(), 0.0);
+    double G = 0.0, H = 0.0;
+    for (std::size_t a = 0; a < wz.x.size(); ++a)
+      for (std::size_t b = 0; b < wp.x.size(); ++b) {
+        const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
+        const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
+        const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
+        const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
+        if (g == 0.0) continue;
+        const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
+        const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(azimuths);
+        for (std::size_t c = 0; c < cs.x.size(); ++c) {
+          const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
+          // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
+          const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1];
+          double lost = 0.0;
+          for (std::size_t f = 0; f < azimuths; ++f) {
+            const double cp = rule.cos_phi[f], sp = rule.sin_phi[f];
+            G += w * 0.5 * p.m1 * (2.0 * k * (st * cp * w1 + ct * w3) + k * k);
+            const double dz = -kick * (st * cp * e1[1] + ct * e3[1]);
+            H += w * u * dz;
+            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u + dz;
+            const double speed = std::sqrt(vx * vx + vy * vy + vz * vz), s = speed / h;
+            const double turn = speed > 0.0 ? vz / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
+            const auto j0 = std::size_t(s);
+            for (std::size_t j = j0; j <= j0 + 3 && j < nb; ++j) {
+              const double N = w * spline(s - double(j) + 3.0);
+              C[j] += N, C1[j] += turn * N;
+            }
+            lost += w;
+          }
+          for (std::size_t j = i; j <= i + 3; ++j) {
+            const double N = lost * spline(u / h - double(j) + 3.0);
+            C[j] -= N, C1[j] -= N;
+          }
+        }
+      }
+    for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
+      const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
+      for (int n = 0; n < 4; ++n) out.m[c][n] += Nj * std::pow(u, 2 * n);
+      out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][6] += Nj * u;
+      for (std::size_t m = 0; m < nb; ++m) coll(Eigen::Index(m), Eigen::Index(c)) += Nj * C[m], coll1(Eigen::Index(m), Eigen::Index(c)) += Nj * C1[m];
+      for (std::size_t m = i; m <= i + 3; ++m) {  // test functions nonzero at u
+        const double Nm = spline(u / h - double(m) + 3.0);
+        drift(Eigen::Index(m), Eigen::Index(c)) += Nj * u * spline_slope(u / h - double(m) + 3.0) / h;
+        gram(Eigen::Index(m), Eigen::Index(c)) += Nj * Nm, gram_u(Eigen::Index(m), Eigen::Index(c)) += Nj * Nm * u;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)) {
+  for (std::size_t f = 0; f < 3 * n / 4; ++f) {
+    const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(3 * n / 4);
+    cos_phi.push_back(std::cos(phi)), sin_phi.push_back(std::sin(phi));
+  }
+}
+
+SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas) {
+  const model::Mixture& mix = rates.mixture();
+  const double s = mix.sigma(1, 0), m1 = mix[0].mass, m2 = mix[1].mass;
+  return {m1, m2, std::sqrt(1.0 / m1), m1 * (1.0 + rates.law().eps(1, 0)) / (m1 + m2), mix[0].density * s * s * rates.chi(1, 0), gas};
+}
+
+SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule) {
+  const double h = U / double(K);
+  const std::size_t nb = K + 3;  // N_j(u) = spline(u/h − j + 3), j = 0 … K + 2
+  const auto n = Eigen::Index(nb);
+  Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K)), coll1 = coll, drift = coll, gram = coll, gram_u = coll;
+  std::vector<IntervalMoments> moments(K);
+  std::vector<std::exception_ptr> failed(K);
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t i = 0; i < K; ++i) {
+    try {
+      const auto cols = Eigen::Index(4 * i);
+      interval(p, h, i, rule, coll.middleCols(cols, 4), coll1.middleCols(cols, 4), drift.middleCols(cols, 4), gram.middleCols(cols, 4),
+               gram_u.middleCols(cols, 4), moments[i]);
+    } catch (...) {
+      failed[i] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
+  SpeedGrid g;
+  g.h = h;
+  g.collisions = g.collisions_p1 = g.drift = g.gram = g.gram_u = Eigen::MatrixXd::Zero(n, n);
+  g.mass = g.u2 = g.u4 = g.u6 = g.gain = g.drag = g.u1 = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd* integrals[7] = {&g.mass, &g.u2, &g.u4, &g.u6, &g.gain, &g.drag, &g.u1};
+  for (std::size_t i = 0; i < K; ++i)
+    for (std::size_t c = 0; c < 4; ++c) {
+      const auto J = Eigen::Index(i + c), col = Eigen::Index(4 * i + c);
+      g.collisions.col(J) += coll.col(col), g.collisions_p1.col(J) += coll1.col(col), g.drift.col(J) += drift.col(col);
+      g.gram.col(J) += gram.col(col), g.gram_u.col(J) += gram_u.col(col);
+      for (int m = 0; m < 7; ++m) (*integrals[m])[J] += moments[i].m[c][m];
+    }
+  return g;
+}
+
+SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P) {
+  const double norm = g.mass.dot(P), u2 = g.u2.dot(P) / norm, u4 = g.u4.dot(P) / norm, u6 = g.u6.dot(P) / norm;
+  // Cumulants at the density's own temperature: c² = u² m₂/(2θ), ⟨c²⟩ = 3/2, a_p = ⟨S_p(c²)⟩/⟨S_p²⟩_M (physics.md §6;
+  // S₂, S₃ of sonine_polynomials.hpp expanded in the moments, ⟨S₂²⟩_M = 15/8, ⟨S₃²⟩_M = 35/16).
+  const double theta = p.m2 * u2 / 3.0, s = p.m2 / (2.0 * theta), x2 = u4 * s * s, x3 = u6 * s * s * s;
+  return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0),
+          g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2)};
+}
+
+Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta) {
+  const GaussRule& uq = speed_rule();
+  const std::size_t nb = std::size_t(g.gram.rows()), K = nb - 3;
+  const double a = m2 / (2.0 * theta), norm = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(Eigen::Index(nb));
+  for (std::size_t i = 0; i < K; ++i)
+    for (std::size_t q = 0; q < uq.x.size(); ++q) {
+      const double u = (double(i) + uq.x[q]) * g.h, f = norm * u * u * std::exp(-a * u * u) * uq.weight[q] * g.h;
+      for (std::size_t m = i; m <= i + 3; ++m) rhs[Eigen::Index(m)] += f * spline(u / g.h - double(m) + 3.0);
+    }
+  return g.gram.ldlt().solve(rhs);
+}
+
+}  // namespace granmix::theory

@@ -1,0 +1,64 @@
+#pragma once
+// The intruder's speed density on a grid of cubic B-splines (issue 12; used by tracer_temperature.hpp for its stationary
+// state and tracer_relaxation.hpp for its relaxation in time). Species 0 the gas (Maxwellian times 1 + a₂S₂ + a₃S₃ at
+// T₁ = 1), species 1 the intruder (n₁ → 0), in the gas's scaled frame, where between collisions dv/ds = (ζ/2)v. For a
+// speed density P(u) = Σ_j P_j N_j(u) and every test function N_m the weak form of the inelastic Boltzmann–Lorentz
+// equation reads
+//   d/ds ∫ P N_m du = Σ_j [collisions + (ζ/2) drift]_mj P_j,
+//   collisions_mj = ∫ N_j(u) ∫dw f_gas(w) ∫dσ̂ n₁σ₁₂²χ₁₂ (g·σ̂)Θ [N_m(|v′|) − N_m(u)] du,   drift_mj = ∫ N_j u N_m′ du,
+// with gram_mj = ∫ N_m N_j du on the left (tracer_temperature.hpp has the quadratures and why B-splines).
+// The same for a vector density v̂ G(u)/(4πu²) (the l = 1 harmonic: the intruder's velocity-weighted distribution, or its
+// displacement-weighted one q(v) = ⟨ΔR δ(v − c)⟩), test functions v̂ N_m(u): the gain weighted by v̂·v̂′ (collisions_p1),
+// the drift and Gram matrices unchanged; the source of q, the speed density P moving (dΔR/ds = c), is gram_u P with
+// gram_u_mj = ∫ N_m N_j u du, and ⟨ΔR·c⟩ = ∫ u G du = u1·G.
+#include <Eigen/Dense>
+
+#include <cstddef>
+#include <vector>
+
+#include "collision_rates.hpp"
+#include "sonine_quadrature.hpp"
+#include "tracer_diffusion_galerkin.hpp"
+
+namespace granmix::theory {
+
+// The collision quadrature of n points in w_z (Gauss–Hermite) and |w_⊥|² (Gauss–Laguerre), n/2 in cos θ of σ̂ about ĝ
+// (Gauss–Legendre), 3n/4 azimuths.
+struct CollisionRule {
+  GaussRule wz, wp, cs;
+  std::vector<double> cos_phi, sin_phi;  // the azimuths' midpoints
+  explicit CollisionRule(std::size_t n);
+};
+
+struct SpeedGridProblem {
+  double m1, m2, sd_gas, beta, rate;  // sd_gas = √(T₁/m₁), beta = m₁(1 + ε)/(m₁ + m₂), rate = n₁σ₁₂²χ₁₂
+  PartnerShape gas;
+};
+// rates: the gas (0) and the intruder (1), constant restitution.
+SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas);
+
+// The assembled weak form on K knot intervals of [0, U] (K + 3 splines), and the splines' integrals against what the
+// solutions are read through: ∫N_j u^(2n) du (n = 0 … 3), ∫N_j G du (G(u) the energy the gas gains per unit time from an
+// intruder of speed u) and ∫N_j H du (H(u) = u·⟨dv/ds⟩_coll, the collisions' rate of change of the intruder's velocity
+// projected on it: −ν(u)u²).
+struct SpeedGrid {
+  double h = 0.0;
+  Eigen::MatrixXd collisions, collisions_p1, drift, gram, gram_u;
+  Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1;  // u1_j = ∫N_j u du
+};
+// The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
+// thread count).
+SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule);
+
+// What a speed density says, at its own normalisation: θ = m₂⟨u²⟩/3 (T₂/T₁), the cumulants a₂, a₃ at θ, the gas's
+// energy gain per intruder and unit time, and ν̄ = −⟨H⟩/⟨u²⟩ (the rate at which the collisions erase the intruder's
+// velocity, averaged with weight u²: the velocity correlation's initial decay, with the scaling's ζ/2 apart).
+struct SpeedMoments {
+  double theta, a2, a3, gain, nu;
+};
+SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
+
+// The Maxwellian speed density at θ on the grid (its L² projection).
+Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta);
+
+}  // namespace granmix::theory
