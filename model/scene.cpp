@@ -294,7 +294,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
@@ -423,6 +423,9 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if ((lower == "converged" || lower == "sonine4") && level != "kinetic-converged-cooling3")
           t.fail("correction_from", "\"" + lower + "\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic-converged-cooling3\", or correction_from = \"paper\" or \"kinetic\"");
+        if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
+          t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
+                 level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
         if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
                  level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");

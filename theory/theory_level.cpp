@@ -169,9 +169,11 @@ class KineticLevel final : public TheoryLevel {
 class ConvergedLevel final : public TheoryLevel {
  public:
   static constexpr std::size_t converged_species_limit = 100;
-  explicit ConvergedLevel(int cooling_order)
-      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order),
-        name_(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") {}
+  // reshaped: the tracer form with the gas's reshaping by the intruders (RelaxationOptions::gas_shape), the companion
+  // that measures that left-out effect; otherwise the same level.
+  explicit ConvergedLevel(int cooling_order, bool reshaped = false)
+      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped),
+        name_(std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
   const char* name() const override { return name_.c_str(); }
   MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep ? MsdMethod::closed : MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
@@ -266,11 +268,17 @@ class ConvergedLevel final : public TheoryLevel {
     t.D_intruder = c.theta * t.tau_v_intruder / rates.mixture()[1].mass;
     return t;
   }
-  // From that start the intruder relaxes (its shape forms, then θ settles: tracer_relaxation.hpp).
+  // From that start the intruder relaxes (its shape forms, then θ settles: tracer_relaxation.hpp); the gas keeps its own
+  // converged memory (this level's, of the gas alone).
   std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override {
     const TracerLimit t = tracer(rates);
     if (!std::isfinite(converged_intruder(rates).theta)) return closed_tracer_form(t);
-    return relaxing_tracer_form(rates, base_.tracer(rates), t.theta, t_end);
+    const model::Species gas = rates.mixture()[0];
+    const CollisionRates alone(model::Mixture({gas}), model::Restitution::constant(1, rates.law().eps(0, 0)), {{rates.chi(0, 0)}});
+    const SettledDiffusion d = diffusion_at(alone, {1.0});
+    RelaxationOptions opt;
+    opt.gas_shape = reshaped_;
+    return relaxing_tracer_form(rates, d.memory_of(0), 2.0 / d.tau0, t.theta, t_end, opt);
   }
 
  private:
@@ -289,6 +297,7 @@ class ConvergedLevel final : public TheoryLevel {
   }
   KineticLevel base_;
   int cooling_order_;
+  bool reshaped_;
   std::string name_;
   mutable std::vector<double> memo_key_;  // one level object serves one thread (scene_theory.cpp)
   mutable SettledDiffusion memo_;
@@ -305,6 +314,7 @@ std::string companion_level(const std::string& level, const std::string& correct
   if (level == "kinetic-converged-cooling3" && correction == "converged") return "kinetic-converged";
   if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
+  if (correction == "reshaped" && level.starts_with("kinetic-converged") && !level.ends_with("-reshaped")) return level + "-reshaped";
   if (correction == "sonine1" && (level == "kinetic" || level == "kinetic-cooling3")) return level + "-sonine1";
   throw std::invalid_argument("no companion level '" + correction + "' beside the level '" + level + "'");
 }
@@ -316,11 +326,13 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
   if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(2);
   if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(3);
+  if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(2, true);
+  if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(3, true);
   for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-converged, kinetic-converged-cooling3)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped)");
 }
 
 }  // namespace granmix::theory

@@ -36,14 +36,14 @@ class ClosedTracerForm final : public TracerForm {
 // The intruder relaxing on the speed grid; both species' displacements along its steps.
 class RelaxingTracerForm final : public TracerForm {
  public:
-  RelaxingTracerForm(const CollisionRates& rates, const TracerLimit& settled, double theta0, double t_end)
-      : r_(relax_intruder(rates, theta0, t_end)), gas_(motion(rates, settled, 0)), intruder_(motion(rates, settled, 1)) {}
+  RelaxingTracerForm(const CollisionRates& rates, const VelocityMemory& gas, double gas_zeta, double theta0, double t_end, RelaxationOptions opt)
+      : r_(relax_intruder(rates, theta0, t_end, opt)), m2_(rates.mixture()[1].mass), gas_(gas_motion(gas, gas_zeta)), intruder_(intruder_motion()) {}
   std::array<double, 2> temperatures(double t) const override {
     const ScaledTimeMotion::Place p = gas_.locate(t);
     const double T1 = gas_.T1(p), w = p.sigma / r_.h[p.n];
     return {T1, T1 * ((1.0 - w) * r_.theta_start[p.n] + w * r_.theta_start[p.n + 1])};
   }
-  // The intruder's from the l = 1 harmonic (cubic Hermite between the steps' ends: dM/ds = 2Q); the gas's one exponential.
+  // The intruder's from the l = 1 harmonic (cubic Hermite between the steps' ends: dM/ds = 2Q).
   double msd(std::size_t k, double t) const override {
     if (k == 0) return gas_.msd(t);
     const ScaledTimeMotion::Place p = gas_.locate(t);
@@ -51,31 +51,38 @@ class RelaxingTracerForm final : public TracerForm {
     const double d0 = 2.0 * h * r_.q_start[p.n], d1 = 2.0 * h * r_.q_start[p.n + 1];
     return (2 * x * x * x - 3 * x * x + 1) * M0 + (x * x * x - 2 * x * x + x) * d0 + (-2 * x * x * x + 3 * x * x) * M1 + (x * x * x - x * x) * d1;
   }
+  // The intruder's increments from later starts by its one mode (ν of its distribution at each step; 0.3% from the l = 1
+  // harmonic's MSD on v2 Fig. 5).
   double tamsd(std::size_t k, double measurement_time, double lag) const override { return of(k).tamsd(measurement_time, lag); }
   double D_ratio(double t) const override {
     const std::size_t n = gas_.locate(t).n;
-    return (v_intruder_[n] / kappa_intruder_[n]) / (v_gas_[n] / kappa_gas_[n]);
+    double D_gas = 0.0;
+    for (std::size_t j = 0; j < gas_modes_.size(); ++j) D_gas += (gas_modes_[j].weight[n] / gas_modes_[j].kappa[n]).real() / 3.0;
+    return (r_.theta[n] / (m2_ * (r_.nu[n] - 0.5 * r_.zeta[n]))) / D_gas;
   }
   double reduced_time(double t) const override { return gas_.scaled_time(gas_.locate(t)); }
 
  private:
-  // Per step: the scaled velocity's mean square 3T_k/(m_k T₁) and its decay κ_k = ν_k − ζ/2. The gas: its kinetic
-  // memory (τ_v,gas⁻¹ = ν₁ − ζ₁/2, D to Sonine order 4) with ζ = ζ₁ + ξ₁₂ the heated cooling rate; the intruder: ν̄ of
-  // its distribution at that step (tracer_speed_grid.hpp).
-  ScaledTimeMotion motion(const CollisionRates& rates, const TracerLimit& settled, std::size_t k) {
-    const std::size_t N = r_.h.size();
-    std::vector<double>& v = k == 0 ? v_gas_ : v_intruder_;
-    std::vector<double>& kappa = k == 0 ? kappa_gas_ : kappa_intruder_;
-    const double m = rates.mixture()[k].mass, zeta1 = 2.0 / settled.tau0;
-    for (std::size_t n = 0; n < N; ++n) {
-      v.push_back(3.0 * (k == 0 ? 1.0 : r_.theta[n]) / m);
-      kappa.push_back(k == 0 ? 1.0 / settled.tau_v_gas - 0.5 * (r_.zeta[n] - zeta1) : r_.nu[n] - 0.5 * r_.zeta[n]);
+  // The gas: its settled memory's modes (velocity_memory.hpp, at its cooling rate gas_zeta), each rate shifted by
+  // −(ζ − gas_zeta)/2 where the intruders' heating changes the gas's cooling rate ζ.
+  ScaledTimeMotion gas_motion(const VelocityMemory& gas, double gas_zeta) {
+    for (std::size_t j = 0; j < gas.weight.size(); ++j) {
+      MotionMode m;
+      for (std::size_t n = 0; n < r_.h.size(); ++n) m.weight.push_back(gas.weight[j]), m.kappa.push_back(gas.rate[j] - 0.5 * (r_.zeta[n] - gas_zeta));
+      gas_modes_.push_back(std::move(m));
     }
-    return ScaledTimeMotion(r_.h, r_.zeta, v, kappa);
+    return ScaledTimeMotion(r_.h, r_.zeta, gas_modes_);
+  }
+  // The intruder: one mode, 3θ/m₂ decaying at κ = ν − ζ/2 (ν of its distribution and the mutual collisions).
+  ScaledTimeMotion intruder_motion() const {
+    MotionMode m;
+    for (std::size_t n = 0; n < r_.h.size(); ++n) m.weight.push_back(3.0 * r_.theta[n] / m2_), m.kappa.push_back(r_.nu[n] - 0.5 * r_.zeta[n]);
+    return ScaledTimeMotion(r_.h, r_.zeta, {m});
   }
   const ScaledTimeMotion& of(std::size_t k) const { return k == 0 ? gas_ : intruder_; }
   TracerRelaxation r_;
-  std::vector<double> v_gas_, kappa_gas_, v_intruder_, kappa_intruder_;
+  double m2_;
+  std::vector<MotionMode> gas_modes_;
   ScaledTimeMotion gas_, intruder_;
 };
 
@@ -83,8 +90,9 @@ class RelaxingTracerForm final : public TracerForm {
 
 std::unique_ptr<TracerForm> closed_tracer_form(const TracerLimit& settled) { return std::make_unique<ClosedTracerForm>(settled); }
 
-std::unique_ptr<TracerForm> relaxing_tracer_form(const CollisionRates& rates, const TracerLimit& settled, double theta0, double t_end) {
-  return std::make_unique<RelaxingTracerForm>(rates, settled, theta0, t_end);
+std::unique_ptr<TracerForm> relaxing_tracer_form(const CollisionRates& rates, const VelocityMemory& gas, double gas_zeta, double theta0, double t_end,
+                                                 RelaxationOptions opt) {
+  return std::make_unique<RelaxingTracerForm>(rates, gas, gas_zeta, theta0, t_end, opt);
 }
 
 }  // namespace granmix::theory

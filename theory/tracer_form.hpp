@@ -4,14 +4,16 @@
 //   closed_tracer_form     θ and the memories settled from the start: every curve in closed form (msd.hpp, tamsd.hpp);
 //                          the paper and kinetic levels.
 //   relaxing_tracer_form   the intruder's temperature and velocity memory relaxing from a Maxwellian start on the
-//                          speed grid (tracer_relaxation.hpp), the gas cooling with the intruders' heating, the
-//                          displacements by the Q-form along those steps (scaled_time_motion.hpp); the kinetic-converged
-//                          levels.
+//                          speed grid (tracer_relaxation.hpp), the gas cooling with the intruders' heating, its MSD
+//                          from the l = 1 harmonic there; the gas's settled multi-mode memory; both species' increments
+//                          by the Q-form along those steps (scaled_time_motion.hpp); the kinetic-converged levels.
 #include <array>
 #include <memory>
 
 #include "collision_rates.hpp"
 #include "tracer_limit.hpp"
+#include "tracer_relaxation.hpp"
+#include "velocity_memory.hpp"
 
 namespace granmix::theory {
 
@@ -26,8 +28,9 @@ class TracerForm {
 };
 
 std::unique_ptr<TracerForm> closed_tracer_form(const TracerLimit& settled);
-// settled: the kinetic tracer form (its gas memory τ_v,gas and cooling); theta0 the intruder's start; t_end the last
-// time any curve asks for (a TAMSD's measurement time).
-std::unique_ptr<TracerForm> relaxing_tracer_form(const CollisionRates& rates, const TracerLimit& settled, double theta0, double t_end);
+// gas: the gas's settled velocity memory alone (its self-diffusion; the level's), at the gas's cooling rate gas_zeta
+// (T₁ = 1); theta0 the intruder's start; t_end the last time any curve asks for (a TAMSD's measurement time).
+std::unique_ptr<TracerForm> relaxing_tracer_form(const CollisionRates& rates, const VelocityMemory& gas, double gas_zeta, double theta0, double t_end,
+                                                 RelaxationOptions opt = {});
 
 }  // namespace granmix::theory

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "model/errors.hpp"
+#include "sonine_cooling.hpp"
 #include "tracer_speed_grid.hpp"
 #include "tracer_temperature.hpp"
 
@@ -26,6 +27,30 @@ double real_time(double h, double zeta, double T1) {
   return (std::abs(x) < 1e-12 ? h : std::expm1(x) / (0.5 * zeta)) / std::sqrt(T1);
 }
 
+// The gas alone relaxes its cumulant c = 2a₂ linearly, dc/ds = g′(c − c₀) at T₁ = 1 (sonine_cooling.hpp, the ⟨w⁴⟩
+// balance; g(c₀) = 0 at its HCS): g′.
+double gas_cumulant_slope(const CollisionRates& rates, double c0) {
+  const CollisionRates alone(model::Mixture({rates.mixture()[0]}), model::Restitution::constant(1, rates.law().eps(0, 0)), {{rates.chi(0, 0)}});
+  const SonineCooling cooling(alone);
+  const double T = 1.0, dc = 1e-3;
+  double xi = 0.0, g0 = 0.0, g1 = 0.0, c = c0;
+  cooling.rates(&T, &c, &xi, &g0);
+  c = c0 + dc;
+  cooling.rates(&T, &c, &xi, &g1);
+  const double slope = (g1 - g0) / dc;  // g is linear in c: exact
+  if (!(slope < 0.0)) throw NumericalError("intruder relaxation: the gas's cumulant does not relax (dg/dc = " + std::to_string(slope) + ")");
+  return slope;
+}
+
+// The weak form with the gas at cumulant a₂: the collision parts are linear in the gas's shape (tracer_speed_grid.hpp),
+// base at a₂ = 0 plus a₂ times the part of S₂.
+SpeedGrid at_gas_a2(const SpeedGrid& base, const SpeedGrid& s2, double a2) {
+  SpeedGrid g = base;
+  g.collisions += a2 * s2.collisions, g.collisions_p1 += a2 * s2.collisions_p1;
+  g.gain += a2 * s2.gain, g.drag += a2 * s2.drag, g.gain4 += a2 * s2.gain4;
+  return g;
+}
+
 }  // namespace
 
 TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, double t_end, RelaxationOptions opt) {
@@ -36,13 +61,17 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
   if (!(t_end > 0.0 && std::isfinite(t_end))) throw std::invalid_argument("intruder relaxation: t_end must be positive");
   const model::Mixture& mix = rates.mixture();
   const KineticTracerGas gas = kinetic_tracer_gas(rates);
-  const SpeedGridProblem p = speed_grid_problem(rates, gas.shape);
+  const SpeedGridProblem p = speed_grid_problem(rates, {1.0, 0.0, 0.0}), p2 = speed_grid_problem(rates, {0.0, 1.0, 0.0});
   static const CollisionRule rule(gas_points);
-  const double width = std::sqrt(theta0 / p.m2);
-  const SpeedGrid g = assemble_speed_grid(p, domain_widths * width, std::size_t(domain_widths * steps_per_width), rule);
+  const double width = std::sqrt(theta0 / p.m2), U = domain_widths * width;
+  const auto K = std::size_t(domain_widths * steps_per_width);
+  const SpeedGrid base = assemble_speed_grid(p, U, K, rule), s2 = assemble_speed_grid(p2, U, K, rule);
+  // The gas's cumulant in time: from DSMC's Maxwellian start to its HCS (c₀ = 2a₂), or settled from the start.
+  const double c0 = 2.0 * gas.shape.a2, slope = gas_cumulant_slope(rates, c0), xi11 = rates.xi(0, 0, 1.0, 1.0);
+  auto gas_a2 = [&](double s) { return opt.gas_relaxes ? -0.5 * c0 * std::expm1(slope * s) : gas.shape.a2; };
   const double heating = -mix[1].density / (1.5 * mix[0].density);  // ξ₁₂ per unit gain
   const double loss = p.rate * std::numbers::pi * (3.0 * width + 2.0 * p.sd_gas), max_step = 2.0 / loss;
-  auto moments = [&](const Eigen::VectorXd& P) {
+  auto moments = [&](const SpeedGrid& g, const Eigen::VectorXd& P) {
     const SpeedMoments m = speed_moments(g, p, P);
     if (!(m.theta > 0.5 * theta0 && m.theta < 1.5 * theta0))
       throw NumericalError("intruder relaxation: theta " + std::to_string(m.theta) + " left the speed grid's range around theta0 " +
@@ -53,15 +82,33 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
   // uniform contraction of the speeds (in the drift), their momentum exchange τ_v,22⁻¹ a uniform decay of q.
   auto xi22 = [&](double theta) { return opt.mutual_collisions ? rates.xi(1, 1, theta, theta) : 0.0; };
   auto inv_tau22 = [&](double theta) { return opt.mutual_collisions ? rates.inv_tau_v(1, 1, theta, theta) : 0.0; };
-  auto A = [&](double zeta, double theta) { return Eigen::MatrixXd(g.collisions + 0.5 * (zeta - xi22(theta)) * g.drift); };
-  auto A1 = [&](double zeta, double theta) {
+  auto A = [&](const SpeedGrid& g, double zeta, double theta) { return Eigen::MatrixXd(g.collisions + 0.5 * (zeta - xi22(theta)) * g.drift); };
+  auto A1 = [&](const SpeedGrid& g, double zeta, double theta) {
     return Eigen::MatrixXd(g.collisions_p1 + 0.5 * (zeta - xi22(theta)) * g.drift - inv_tau22(theta) * g.gram);
   };
   auto nu22 = [&](double theta) { return inv_tau22(theta) + 0.5 * xi22(theta); };
-  auto gas_rate = [&](const SpeedMoments& x) { return gas.zeta1 + (opt.heating ? heating * x.gain : 0.0); };
+  // The gas's state under the intruders: its cumulant a₂ (relaxing from the start) and cooling rate ξ₁₁(1 + 3a₂/16) (= ζ₁
+  // settled), with their heating ξ₁₂ and, with gas_shape, the shift of its cumulant that heating sources, in both its
+  // cooling rate and the intruders' collisions: δc = −source/g′, source = 2(1 + a₂)(S₄/⟨w⁴⟩ − 2S₂/⟨w²⟩),
+  // ⟨w⁴⟩ = 15(1 + a₂)/m₁², S₂/⟨w²⟩ = −ξ₁₂ (quasi-static: c relaxes within a few collisions, the source over hundreds).
+  struct GasState {
+    double a2, zeta;
+  };
+  auto gas_state = [&](double s_at, const SpeedMoments& x) {
+    const double a2 = gas_a2(s_at), xi12 = opt.heating ? heating * x.gain : 0.0;
+    double shifted = a2;
+    if (opt.heating && opt.gas_shape) {
+      const double source = 2.0 * p.m1 * p.m1 * (mix[1].density / mix[0].density) * x.gain4 / 15.0 + 4.0 * (1.0 + a2) * xi12;
+      shifted += -0.5 * source / slope;
+    }
+    return GasState{shifted, xi11 * (1.0 + 3.0 * shifted / 16.0) + xi12};
+  };
+  SpeedGrid g = at_gas_a2(base, s2, gas_a2(0.0));
   Eigen::VectorXd P = maxwellian_speed_density(g, p.m2, theta0);
-  SpeedMoments m = moments(P);
-  double zeta = gas_rate(m), s = 0.0, t = 0.0, T1 = 1.0;
+  SpeedMoments m = moments(g, P);
+  GasState gs = gas_state(0.0, m);
+  if (opt.gas_shape) g = at_gas_a2(base, s2, gs.a2), m = moments(g, P), gs = gas_state(0.0, m);
+  double zeta = gs.zeta, s = 0.0, t = 0.0, T1 = 1.0;
   TracerRelaxation out;
   out.theta_start.push_back(m.theta);
   // The displacement-weighted distribution q (l = 1, tracer_speed_grid.hpp) from q = 0, and the MSD M: dM/ds = 2 u1·q.
@@ -70,20 +117,23 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
   out.msd_start.push_back(0.0), out.q_start.push_back(0.0);
   while (t < t_end) {
     const double h = std::min(max_step, first_step + step_growth * s);
-    const Eigen::VectorXd rhs = (g.gram + 0.5 * h * A(zeta, m.theta)) * P;
+    const Eigen::VectorXd rhs = (g.gram + 0.5 * h * A(g, zeta, m.theta)) * P;
     Eigen::VectorXd next = P;
-    double zeta_next = zeta;
+    GasState gn = gas_state(s + h, m);
+    SpeedGrid g_next = at_gas_a2(base, s2, gn.a2);
     SpeedMoments mn = m;
-    for (int pass = 0; pass < 2; ++pass) {  // the new step's ζ and θ from its own solution
-      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(g.gram - 0.5 * h * A(zeta_next, mn.theta));
+    for (int pass = 0; pass < 2; ++pass) {  // the new step's gas state and θ from its own solution
+      const Eigen::PartialPivLU<Eigen::MatrixXd> lu(g.gram - 0.5 * h * A(g_next, gn.zeta, mn.theta));
       next = lu.solve(rhs);
       if (!next.allFinite()) throw NumericalError("intruder relaxation: a trapezoidal step's system is singular at s = " + std::to_string(s));
-      mn = moments(next);
-      zeta_next = gas_rate(mn);
+      mn = moments(g_next, next);
+      gn = gas_state(s + h, mn);
+      if (opt.gas_shape) g_next = at_gas_a2(base, s2, gn.a2), mn = moments(g_next, next);
     }
+    const double zeta_next = gn.zeta;
     // q's trapezoidal step with the same ζ's; its source the speed density, moving.
-    const Eigen::VectorXd q_next = Eigen::PartialPivLU<Eigen::MatrixXd>(g.gram - 0.5 * h * A1(zeta_next, mn.theta))
-                                       .solve((g.gram + 0.5 * h * A1(zeta, m.theta)) * q + 0.5 * h * g.gram_u * (P / g.mass.dot(P) + next / g.mass.dot(next)));
+    const Eigen::VectorXd q_next = Eigen::PartialPivLU<Eigen::MatrixXd>(g.gram - 0.5 * h * A1(g_next, zeta_next, mn.theta))
+                                       .solve((g.gram + 0.5 * h * A1(g, zeta, m.theta)) * q + 0.5 * h * g.gram_u * (P / g.mass.dot(P) + next / g.mass.dot(next)));
     M += h * (g.u1.dot(q) + g.u1.dot(q_next));
     q = q_next;
     out.msd_start.push_back(M), out.q_start.push_back(g.u1.dot(q));
@@ -92,7 +142,7 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
     out.theta.push_back(0.5 * (m.theta + mn.theta)), out.nu.push_back(0.5 * (m.nu + mn.nu + nu22(m.theta) + nu22(mn.theta))), out.a2.push_back(0.5 * (m.a2 + mn.a2));
     out.theta_start.push_back(mn.theta);
     t += real_time(h, z, T1), T1 *= std::exp(-z * h), s += h;
-    P = next, m = mn, zeta = zeta_next;
+    P = next, m = mn, zeta = zeta_next, g = g_next;
   }
   return out;
 }

@@ -53,9 +53,9 @@ const GaussRule& speed_rule() {
   return uq;
 }
 
-// The integrals of the trial functions i … i + 3 (nonzero on knot interval i) against 1, u², u⁴, u⁶, G, H, u.
+// The integrals of the trial functions i … i + 3 (nonzero on knot interval i) against 1, u², u⁴, u⁶, G, H, u, G₄.
 struct IntervalMoments {
-  double m[4][7] = {};
+  double m[4][8] = {};
 };
 
 // Knot interval i: the collision, drift and Gram columns of its four trial functions (rows every test function).
@@ -70,7 +70,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
     // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]; G(u), H(u) the same average of the gas's energy gain and of u·Δv.
     std::fill(C.begin(), C.end(), 0.0);
     std::fill(C1.begin(), C1.end(), 0.0);
-    double G = 0.0, H = 0.0;
+    double G = 0.0, H = 0.0, G4 = 0.0;
     for (std::size_t a = 0; a < wz.x.size(); ++a)
       for (std::size_t b = 0; b < wp.x.size(); ++b) {
         const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
@@ -83,11 +83,12 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
         for (std::size_t c = 0; c < cs.x.size(); ++c) {
           const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
           // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
-          const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1];
+          const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
           double lost = 0.0;
           for (std::size_t f = 0; f < azimuths; ++f) {
             const double cp = rule.cos_phi[f], sp = rule.sin_phi[f];
-            G += w * 0.5 * p.m1 * (2.0 * k * (st * cp * w1 + ct * w3) + k * k);
+            const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
+            G += w * 0.5 * p.m1 * dw2, G4 += w * (2.0 * ww + dw2) * dw2;
             const double dz = -kick * (st * cp * e1[1] + ct * e3[1]);
             H += w * u * dz;
             const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u + dz;
@@ -109,7 +110,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
     for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
       const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
       for (int n = 0; n < 4; ++n) out.m[c][n] += Nj * std::pow(u, 2 * n);
-      out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][6] += Nj * u;
+      out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][6] += Nj * u, out.m[c][7] += Nj * G4;
       for (std::size_t m = 0; m < nb; ++m) coll(Eigen::Index(m), Eigen::Index(c)) += Nj * C[m], coll1(Eigen::Index(m), Eigen::Index(c)) += Nj * C1[m];
       for (std::size_t m = i; m <= i + 3; ++m) {  // test functions nonzero at u
         const double Nm = spline(u / h - double(m) + 3.0);
@@ -157,14 +158,14 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
   SpeedGrid g;
   g.h = h;
   g.collisions = g.collisions_p1 = g.drift = g.gram = g.gram_u = Eigen::MatrixXd::Zero(n, n);
-  g.mass = g.u2 = g.u4 = g.u6 = g.gain = g.drag = g.u1 = Eigen::VectorXd::Zero(n);
-  Eigen::VectorXd* integrals[7] = {&g.mass, &g.u2, &g.u4, &g.u6, &g.gain, &g.drag, &g.u1};
+  g.mass = g.u2 = g.u4 = g.u6 = g.gain = g.drag = g.u1 = g.gain4 = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd* integrals[8] = {&g.mass, &g.u2, &g.u4, &g.u6, &g.gain, &g.drag, &g.u1, &g.gain4};
   for (std::size_t i = 0; i < K; ++i)
     for (std::size_t c = 0; c < 4; ++c) {
       const auto J = Eigen::Index(i + c), col = Eigen::Index(4 * i + c);
       g.collisions.col(J) += coll.col(col), g.collisions_p1.col(J) += coll1.col(col), g.drift.col(J) += drift.col(col);
       g.gram.col(J) += gram.col(col), g.gram_u.col(J) += gram_u.col(col);
-      for (int m = 0; m < 7; ++m) (*integrals[m])[J] += moments[i].m[c][m];
+      for (int m = 0; m < 8; ++m) (*integrals[m])[J] += moments[i].m[c][m];
     }
   return g;
 }
@@ -175,7 +176,7 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
   // S₂, S₃ of sonine_polynomials.hpp expanded in the moments, ⟨S₂²⟩_M = 15/8, ⟨S₃²⟩_M = 35/16).
   const double theta = p.m2 * u2 / 3.0, s = p.m2 / (2.0 * theta), x2 = u4 * s * s, x3 = u6 * s * s * s;
   return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0),
-          g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2)};
+          g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2), g.gain4.dot(P) / norm};
 }
 
 Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta) {

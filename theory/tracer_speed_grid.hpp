@@ -44,7 +44,7 @@ SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerSh
 struct SpeedGrid {
   double h = 0.0;
   Eigen::MatrixXd collisions, collisions_p1, drift, gram, gram_u;
-  Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1;  // u1_j = ∫N_j u du
+  Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1, gain4;  // u1_j = ∫N_j u du; gain4 as gain for the gas's Δ|w|⁴
 };
 // The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
 // thread count).
@@ -55,6 +55,7 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
 // velocity, averaged with weight u²: the velocity correlation's initial decay, with the scaling's ζ/2 apart).
 struct SpeedMoments {
   double theta, a2, a3, gain, nu;
+  double gain4;  // the rate of the gas's Δ|w|⁴ per intruder (its fourth moment's source: the intruders reshape the gas)
 };
 SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
 

@@ -32,7 +32,7 @@ SpeedMoments solve(const SpeedGridProblem& p, double zeta, double U, std::size_t
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(A.rows());
   A.row(last) = g.mass.transpose(), rhs[last] = 1.0;
   const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  if (!lu.isInvertible()) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 0.0};
+  if (!lu.isInvertible()) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 0.0, 0.0};
   return speed_moments(g, p, lu.solve(rhs));
 }
 

@@ -100,7 +100,8 @@ TEST_CASE("TAMSD of a cooling gas follows the settled-state model in the ballist
     std::printf("cooling TAMSD lag %g: DSMC %.4g +- %.2g, model %.4g (rel %+.3f)\n", s.times[l], r.tamsd.mean[l], r.tamsd.err[l], th,
                 r.tamsd.mean[l] / th - 1);
     // Ballistic: ⟨v²⟩ averaged over the window; the model's Haff τ0 lacks the Sonine factor 1 + 3a₂/16
-    // (1%) and the start-grid quadrature errs by < 1%: 3% plus 4σ.
-    CHECK(std::abs(r.tamsd.mean[l] - th) < 0.03 * th + 4 * r.tamsd.err[l]);
+    // (1%) and the start grid's trapezoid errs by ~1e-4 (its ratio 1.027 per start): 1.1% plus 4σ. Regression: the
+    // average used to stop at the grid's last start below 𝒯 − Δ (972.7 for 999.99) and came out 2.7% high.
+    CHECK(std::abs(r.tamsd.mean[l] - th) < 0.011 * th + 4 * r.tamsd.err[l]);
   }
 }
