@@ -259,20 +259,13 @@ class ConvergedLevel final : public TheoryLevel {
   // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
   // tracer_temperature.hpp) as its start, its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant
   // ε < 1, intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
-  TracerLimit tracer(const CollisionRates& rates) const override {
-    TracerLimit t = base_.tracer(rates);
-    const TracerTemperature c = converged_intruder(rates);
-    if (!std::isfinite(c.theta)) return t;
-    t.theta = c.theta;
-    t.tau_v_intruder = 1.0 / (c.nu - 0.5 * (2.0 / t.tau0 + c.xi12));
-    t.D_intruder = c.theta * t.tau_v_intruder / rates.mixture()[1].mass;
-    return t;
-  }
+  TracerLimit tracer(const CollisionRates& rates) const override { return tracer_at(rates, converged_intruder(rates)); }
   // From that start the intruder relaxes (its shape forms, then θ settles: tracer_relaxation.hpp); the gas keeps its own
   // converged memory (this level's, of the gas alone).
   std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override {
-    const TracerLimit t = tracer(rates);
-    if (!std::isfinite(converged_intruder(rates).theta)) return closed_tracer_form(t);
+    const TracerTemperature c = converged_intruder(rates);  // once: the speed-grid solve is ~0.25 s
+    const TracerLimit t = tracer_at(rates, c);
+    if (!std::isfinite(c.theta)) return closed_tracer_form(t);
     const model::Species gas = rates.mixture()[0];
     const CollisionRates alone(model::Mixture({gas}), model::Restitution::constant(1, rates.law().eps(0, 0)), {{rates.chi(0, 0)}});
     const SettledDiffusion d = diffusion_at(alone, {1.0});
@@ -282,6 +275,14 @@ class ConvergedLevel final : public TheoryLevel {
   }
 
  private:
+  TracerLimit tracer_at(const CollisionRates& rates, const TracerTemperature& c) const {
+    TracerLimit t = base_.tracer(rates);
+    if (!std::isfinite(c.theta)) return t;
+    t.theta = c.theta;
+    t.tau_v_intruder = 1.0 / (c.nu - 0.5 * (2.0 / t.tau0 + c.xi12));
+    t.D_intruder = c.theta * t.tau_v_intruder / rates.mixture()[1].mass;
+    return t;
+  }
   static TracerTemperature converged_intruder(const CollisionRates& rates) {
     const model::Restitution& law = rates.law();
     if (rates.size() != 2 || law.is_viscoelastic() || !(law.eps(0, 0) < 1.0)) return {};
