@@ -3,10 +3,10 @@
 #include <Eigen/Eigenvalues>
 
 #include <cmath>
-#include <exception>
 #include <string>
 
 #include "model/errors.hpp"
+#include "parallel_each.hpp"
 
 namespace granmix::theory {
 
@@ -145,19 +145,11 @@ void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
 void GalerkinDecay::compute(const std::vector<std::pair<std::size_t, Node>>& missing) const {
   const std::size_t N = rates_.size();
   std::vector<Sources> computed(missing.size());
-  std::vector<std::exception_ptr> failed(missing.size());
-#pragma omp parallel for schedule(dynamic, 1) if (missing.size() > 1)
-  for (std::size_t m = 0; m < missing.size(); ++m) {
-    try {
-      const Node& at = missing[m].second;
-      computed[m] = pair_sources(missing[m].first / N, missing[m].first % N, std::exp(double(at.first) * scale_grid_step),
-                                 std::exp(double(at.second) * pair_grid_step));
-    } catch (...) {
-      failed[m] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  parallel_each(missing.size(), [&](std::size_t m) {
+    const Node& at = missing[m].second;
+    computed[m] = pair_sources(missing[m].first / N, missing[m].first % N, std::exp(double(at.first) * scale_grid_step),
+                               std::exp(double(at.second) * pair_grid_step));
+  });
   for (std::size_t m = 0; m < missing.size(); ++m) tables_->pairs[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
 }
 

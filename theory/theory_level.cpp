@@ -1,7 +1,6 @@
 #include "theory_level.hpp"
 
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -16,6 +15,7 @@
 #include "sonine_pair_terms.hpp"
 #include "sonine_tracer.hpp"
 #include "galerkin_decay.hpp"
+#include "parallel_each.hpp"
 #include "tracer_diffusion_galerkin.hpp"
 #include "tracer_temperature.hpp"
 #include "model/errors.hpp"
@@ -220,21 +220,13 @@ class ConvergedLevel final : public TheoryLevel {
     // each wholly on one, so the numbers do not depend on the thread count.
     std::vector<double> Dk(N);
     std::vector<std::optional<VelocityMemory>> memory(N);
-    std::vector<std::exception_ptr> failed(N);
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::size_t k = 0; k < N; ++k) {
-      try {
-        GalerkinOptions opt;
-        opt.zeta = xi[k], opt.a2 = a2.data(), opt.a3 = a3.data();
-        const ConvergedDiffusion c = converged_tracer_diffusion(rates, k, T.data(), opt);
-        Dk[k] = c.D;
-        if (std::isfinite(c.D)) memory[k] = galerkin_memory(c.problem);
-      } catch (...) {
-        failed[k] = std::current_exception();
-      }
-    }
-    for (const std::exception_ptr& e : failed)
-      if (e) std::rethrow_exception(e);
+    parallel_each(N, [&](std::size_t k) {
+      GalerkinOptions opt;
+      opt.zeta = xi[k], opt.a2 = a2.data(), opt.a3 = a3.data();
+      const ConvergedDiffusion c = converged_tracer_diffusion(rates, k, T.data(), opt);
+      Dk[k] = c.D;
+      if (std::isfinite(c.D)) memory[k] = galerkin_memory(c.problem);
+    });
     SettledDiffusion d;
     d.T = T;
     for (std::size_t k = 0; k < N; ++k) {

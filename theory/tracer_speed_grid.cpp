@@ -3,10 +3,10 @@
 #include <gsl/gsl_integration.h>
 
 #include <cmath>
-#include <exception>
 #include <numbers>
 
 #include "model/errors.hpp"
+#include "parallel_each.hpp"
 #include "sonine_polynomials.hpp"
 
 namespace granmix::theory {
@@ -142,19 +142,11 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
   const auto n = Eigen::Index(nb);
   Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K)), coll1 = coll, drift = coll, gram = coll, gram_u = coll;
   std::vector<IntervalMoments> moments(K);
-  std::vector<std::exception_ptr> failed(K);
-#pragma omp parallel for schedule(dynamic, 1)
-  for (std::size_t i = 0; i < K; ++i) {
-    try {
-      const auto cols = Eigen::Index(4 * i);
-      interval(p, h, i, rule, coll.middleCols(cols, 4), coll1.middleCols(cols, 4), drift.middleCols(cols, 4), gram.middleCols(cols, 4),
-               gram_u.middleCols(cols, 4), moments[i]);
-    } catch (...) {
-      failed[i] = std::current_exception();
-    }
-  }
-  for (const std::exception_ptr& e : failed)
-    if (e) std::rethrow_exception(e);
+  parallel_each(K, [&](std::size_t i) {
+    const auto cols = Eigen::Index(4 * i);
+    interval(p, h, i, rule, coll.middleCols(cols, 4), coll1.middleCols(cols, 4), drift.middleCols(cols, 4), gram.middleCols(cols, 4),
+             gram_u.middleCols(cols, 4), moments[i]);
+  });
   SpeedGrid g;
   g.h = h;
   g.collisions = g.collisions_p1 = g.drift = g.gram = g.gram_u = Eigen::MatrixXd::Zero(n, n);
