@@ -16,6 +16,7 @@
 #include "theory/sonine2_diffusion.hpp"
 #include "theory/scaled_time_motion.hpp"
 #include "theory/tamsd.hpp"
+#include "theory/theory_level.hpp"
 #include "theory/tracer_relaxation.hpp"
 #include "theory/tracer_speed_grid.hpp"
 #include "theory/tracer_temperature.hpp"
@@ -140,4 +141,22 @@ TEST_CASE("intruder relaxation: v2 Fig. 5 from the converged start, converged in
   CHECK(late == Approx(571.3).epsilon(2e-3));
   CHECK(late_alone / late - 1.0 > 0.008);
   CHECK(without.msd_start.back() / with.msd_start.back() - 1.0 > 0.03);
+}
+
+TEST_CASE("kinetic-converged tracer form: it starts where DSMC does, at the level's tracer theta, reshaped or not", "[theory]") {
+  // DSMC starts the intruders at TheoryLevel::tracer's θ (dsmc/scene_dsmc.cpp); the relaxing form must start there too,
+  // Maxwellian (ballistic MSD 3θ/m₂ t², T₁ = 1), whichever companion computes it (the form solves the converged
+  // intruder once and passes it on: a θ differing between the two would shift every early point of v2 Fig. 5).
+  const CollisionRates r = fig05_pair();
+  for (const char* name : {"kinetic-converged", "kinetic-converged-reshaped"}) {
+    const auto level = make_theory_level(name);
+    const double theta = level->tracer(r).theta;
+    CHECK(theta == Approx(579.74).epsilon(1e-4));
+    const std::unique_ptr<TracerForm> form = level->tracer_form(r, 10.0);
+    const double t = 1e-4, m2 = r.mixture()[1].mass;
+    const std::array<double, 2> T = form->temperatures(t);
+    CHECK(T[0] == Approx(1.0).epsilon(1e-4));
+    CHECK(T[1] / T[0] == Approx(theta).epsilon(1e-5));
+    CHECK(form->msd(1, t) == Approx(3.0 * theta / m2 * t * t).epsilon(1e-4));
+  }
 }
