@@ -20,6 +20,7 @@ class ClosedFormTerms final : public SoninePairTerms {
   SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
     return sonine_cross(w, 1.0, 1.0, law_.eps(i, j), mu_ji, lambda_i, lambda_j);
   }
+  bool concurrent_cross() const override { return true; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
                           bool partner_sonine) const override {
     const double eps = law_.eps(k, i), beta = mi / (mi + mk) * (1.0 + eps);
@@ -80,6 +81,7 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
     return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
   }
+  bool concurrent_cross() const override { return false; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
                           bool) const override {  // the partner's a₂, a₃ terms exist in closed form only (left zero)
     const double Ak = Tk / mk, Ai = Ti / mi;

@@ -24,6 +24,9 @@ class SoninePairTerms {
   // Species i with itself and with partner j (w = x_j χ_ij s_ij, mu_ji = m_j/(m_i+m_j)), as sonine_self/cross.
   virtual SonineMoments self(std::size_t i, double w, double lambda_i) const = 0;
   virtual SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const = 0;
+  // Whether cross() may run on several threads at once (the closed forms: yes; the quadrature shares its per-pair
+  // cache of ε between (i, j) and (j, i): no). SonineSystem::assemble splits its rows over threads when it may.
+  virtual bool concurrent_cross() const = 0;
   // The tracer problem of k with partner i (weight = n_i σ_ki² χ_ki, masses, temperatures): the Maxwellian
   // C_pq (p, q < modes) and ξ_ki (v1 A2 at constant ε, its quadrature otherwise); with partner_sonine also the
   // coefficients of the partner's a₂, a₃ in C_pq (closed forms at constant ε; the quadrature leaves them zero).
