@@ -10,6 +10,7 @@
 #include <Eigen/Dense>
 
 #include "model/errors.hpp"
+#include "equilibrated_solve.hpp"
 #include "sonine_moment_table.hpp"
 #include "term_table.hpp"
 
@@ -147,9 +148,8 @@ std::vector<double> SonineMomentCooling::steady_state(const double* T) const {
     z[j] = 0.0;
     for (std::size_t i = 0; i < n; ++i) A(Eigen::Index(i), Eigen::Index(j)) = d[i] - b[i];
   }
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  if (!lu.isInvertible()) throw NumericalError("Sonine moments at order " + std::to_string(order_) + ": the steady a's are singular (Eigen FullPivLU)");
-  const Eigen::VectorXd x = lu.solve(-Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(n)));
+  const Eigen::VectorXd x = solve_equilibrated(A, -Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(n)),
+                                                "Sonine moments at order " + std::to_string(order_) + ": the steady a's");
   return std::vector<double>(x.data(), x.data() + n);
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "model/errors.hpp"
+#include "equilibrated_solve.hpp"
 #include "sonine_pair_terms.hpp"
 
 namespace granmix::theory {
@@ -10,7 +11,7 @@ namespace granmix::theory {
 SonineSystem::SonineSystem(const model::Mixture& mix, const model::Restitution& alpha,
                            const std::vector<std::vector<double>>& chi, double sref2, std::shared_ptr<const SoninePairTerms> terms)
     : mix_(mix), chi_(chi), sref2_(sref2), N_(mix.size()), terms_(terms ? std::move(terms) : make_sonine_pair_terms(alpha)), K_(N_, N_), Z_(N_, N_), A_(N_),
-      z0_(N_), c_(N_), lu_(N_, N_) {}
+      z0_(N_), c_(N_) {}
 
 void SonineSystem::assemble(const double* lambda) {
   // Rows are independent (row i writes K_, Z_ (i, ·), A_, z0_ [i]) and each is summed wholly by one thread in a fixed
@@ -38,9 +39,7 @@ void SonineSystem::assemble(const double* lambda) {
 }
 
 void SonineSystem::solve_cumulants(double* c) {
-  lu_.compute(K_);
-  if (!lu_.isInvertible()) throw NumericalError("Sonine: the linear system for the cumulants is singular");
-  c_ = lu_.solve(A_);
+  c_ = solve_equilibrated(K_, A_, "Sonine cumulants (MG Eqs. 33-38)");  // rows scale with λ_i: equilibrated
   for (std::size_t i = 0; i < N_; ++i) c[i] = c_[i];
 }
 

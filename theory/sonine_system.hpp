@@ -50,7 +50,6 @@ class SonineSystem {
   std::shared_ptr<const SoninePairTerms> terms_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
   Eigen::VectorXd A_, z0_, c_;
-  Eigen::FullPivLU<Eigen::MatrixXd> lu_;
 };
 
 }  // namespace granmix::theory
