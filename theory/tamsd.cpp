@@ -36,8 +36,11 @@ double tamsd(const VelocityMemory& memory, double tau0, double measurement_time,
   double result = 0.0, abserr = 0.0;
   const double span = measurement_time - lag;
   // 1e-10 relative: far below any statistical error a simulation can reach.
-  const int status = gsl_integration_qag(&f, 0.0, span, 0.0, 1e-10, model::quadrature_intervals, GSL_INTEG_GAUSS21,
-                                         model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
+  int status = gsl_integration_qag(&f, 0.0, span, 0.0, 1e-10, model::quadrature_intervals, GSL_INTEG_GAUSS21,
+                                   model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
+  // The increments' own rounding (differences of exponentials) stops the refinement near 1e-9 for a heavy intruder
+  // whose velocity persists (mass ratio 1e4: 1.3e-9); accepted while the error estimate stays below 1e-7 relative.
+  if (status == GSL_EROUND && abserr <= 1e-7 * std::abs(result)) status = GSL_SUCCESS;
   if (status != GSL_SUCCESS) throw NumericalError(std::string("TAMSD quadrature: ") + gsl_strerror(status));
   return result / span;
 }
