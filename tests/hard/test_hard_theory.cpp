@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "model/errors.hpp"
 #include "theory/diffusion.hpp"
 #include "theory/msd.hpp"
 #include "theory/settled_ratios.hpp"
@@ -172,4 +173,19 @@ TEST_CASE("mass ratio 1e4 intruder in the tracer limit: its TAMSD is finite, pos
     CHECK(x > previous);
     previous = x;
   }
+}
+
+TEST_CASE("kinetic-converged tracer form beyond its speed grid's mass ratio: a clear error naming the limit", "[theory][hard]") {
+  // Each kick is ~m1/m2 of the intruder's thermal speed: from m2/m1 ~ 500 the grid's θ jumps by 30-50% from pass to pass
+  // (at 1e4 it once settled by chance). The level refuses with the mass ratio and the limit, and exits 3 (solver).
+  const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {500, std::cbrt(500.0), 1e-5}}, 0.5);
+  const auto level = make_theory_level("kinetic-converged");
+  CHECK_THROWS_WITH(level->tracer(r), Catch::Contains("mass ratio 500") && Catch::Contains("m2/m1 = 200"));
+  CHECK_THROWS_AS(level->tracer(r), granmix::NumericalError);
+  // The kinetic level's tracer form has no grid: finite there.
+  CHECK(std::isfinite(make_theory_level("kinetic")->tracer(r).theta));
+  // At m2/m1 = 300 the grid settles, but its θ moves 5.5% with the grid; rarer intruders (n2/n1 = 1e-6, their heating of
+  // the gas within the level's 10% share) are refused for that: the 1% limit.
+  const CollisionRates r300 = test::constant_rates({{1, 1, 0.1}, {300, std::cbrt(300.0), 1e-7}}, 0.5);
+  CHECK_THROWS_WITH(level->tracer(r300), Catch::Contains("only to") && Catch::Contains("the limit is 1%"));
 }
