@@ -275,11 +275,13 @@ class ConvergedLevel final : public TheoryLevel {
     t.D_intruder = c.theta * t.tau_v_intruder / rates.mixture()[1].mass;
     return t;
   }
-  // The speed grid resolves a heavy intruder's many small kicks (each ~m₁/m₂ of its thermal speed) only so far: its θ
-  // moves with the grid (`change`: knots 1.5× wider or the coarse collision rule) by 0.2% at m₂/m₁ = 100 (v2 Fig. 5),
-  // 1.2% at 200, 5.5% at 300, and from ~500 the grid's θ does not settle at all (ε = 0.5, measured 2026-12-04). Beyond
-  // 1% the level refuses, naming the limit, rather than judge DSMC against a number the grid does not resolve.
-  static constexpr double max_grid_change = 0.01;
+  // The speed grid resolves a heavy intruder's many small kicks (each ~m₁/m₂ of its thermal speed) only so far. Its θ
+  // moves with a coarser grid (`change`: knots 1.5× wider or the coarse collision rule; the grid used is finer) by 0.04%
+  // at m₂/m₁ = 100, ε = 0.7, 0.2% at ε = 0.5 (v2 Fig. 5), 1.0/1.9% at ε = 0.9/0.8 (θ near equipartition), 5.5% at m₂/m₁ =
+  // 300 (ε = 0.5); from ~500 it does not settle at all, and at 3000 it once settled by chance with a change of 60%
+  // (measured 2026-12-04). Beyond 10% the level refuses, naming the limit, rather than judge DSMC against a number the
+  // grid does not resolve.
+  static constexpr double max_grid_change = 0.1;
   static TracerTemperature converged_intruder(const CollisionRates& rates) {
     const model::Restitution& law = rates.law();
     if (rates.size() != 2 || law.is_viscoelastic() || !(law.eps(0, 0) < 1.0)) return {};
@@ -287,7 +289,7 @@ class ConvergedLevel final : public TheoryLevel {
     if (std::isfinite(c.theta) && !(c.change <= max_grid_change))
       throw NumericalError("converged intruder temperature: the speed grid resolves theta = " + std::to_string(c.theta) + " only to " +
                            std::to_string(100.0 * c.change) + "% (mass ratio " + std::to_string(rates.mixture()[1].mass / rates.mixture()[0].mass) +
-                           "; the limit is 1%, about m2/m1 = 200 at eps = 0.5): level = \"kinetic\" for this intruder");
+                           "; the limit is 10%, about m2/m1 = 400 at eps = 0.5): level = \"kinetic\" for this intruder");
     return c;
   }
   void refuse_beyond_species_limit(const CollisionRates& rates) const {

@@ -44,6 +44,8 @@ struct RelaxationOptions {
   // T₁ at t = 8e3 +2.2% against DSMC with it, −1.2% without; the tail's own fast cooling takes much of the source);
   // the difference it makes is the judged level's model error for that left-out reshaping (level "…-reshaped").
   bool gas_shape = false;
+  // Once nothing changes any more (relax_intruder's settled steps: long, without solves); off: every step solved.
+  bool settle = true;
 };
 
 // rates: the gas (0) and the intruder (1), constant restitution with ε₁₁ < 1; integrated until the real time t_end.

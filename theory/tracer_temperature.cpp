@@ -64,7 +64,7 @@ TracerTemperature converged_tracer_temperature(const CollisionRates& rates, doub
   }
   // Measured: the grid's θ stops settling from a mass ratio of ~500 (ε = 0.5), its kicks too small for the knots.
   throw NumericalError("converged tracer temperature: the speed grid did not settle on θ in 30 passes (theta " + std::to_string(theta) +
-                       ", mass ratio " + std::to_string(p.m2 / p.m1) + ": the grid resolves intruders up to about m2/m1 = 200 at eps = 0.5)");
+                       ", mass ratio " + std::to_string(p.m2 / p.m1) + ": its θ settles for intruders up to about m2/m1 = 300 at eps = 0.5)");
 }
 
 KineticTracerGas kinetic_tracer_gas(const CollisionRates& rates) {
