@@ -9,7 +9,6 @@
 
 #include <Eigen/Dense>
 
-#include "model/errors.hpp"
 #include "equilibrated_solve.hpp"
 #include "sonine_moment_table.hpp"
 #include "term_table.hpp"

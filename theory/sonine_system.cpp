@@ -2,7 +2,6 @@
 
 #include <cmath>
 
-#include "model/errors.hpp"
 #include "equilibrated_solve.hpp"
 #include "sonine_pair_terms.hpp"
 
@@ -11,7 +10,7 @@ namespace granmix::theory {
 SonineSystem::SonineSystem(const model::Mixture& mix, const model::Restitution& alpha,
                            const std::vector<std::vector<double>>& chi, double sref2, std::shared_ptr<const SoninePairTerms> terms)
     : mix_(mix), chi_(chi), sref2_(sref2), N_(mix.size()), terms_(terms ? std::move(terms) : make_sonine_pair_terms(alpha)), K_(N_, N_), Z_(N_, N_), A_(N_),
-      z0_(N_), c_(N_) {}
+      z0_(N_) {}
 
 void SonineSystem::assemble(const double* lambda) {
   // Rows are independent (row i writes K_, Z_ (i, ·), A_, z0_ [i]) and each is summed wholly by one thread in a fixed
@@ -39,8 +38,7 @@ void SonineSystem::assemble(const double* lambda) {
 }
 
 void SonineSystem::solve_cumulants(double* c) {
-  c_ = solve_equilibrated(K_, A_, "Sonine cumulants (MG Eqs. 33-38)");  // rows scale with λ_i: equilibrated
-  for (std::size_t i = 0; i < N_; ++i) c[i] = c_[i];
+  Eigen::Map<Eigen::VectorXd>(c, Eigen::Index(N_)) = solve_equilibrated(K_, A_, "Sonine cumulants (MG Eqs. 33-38)");
 }
 
 void SonineSystem::cooling(const double* c, double* zeta) const {

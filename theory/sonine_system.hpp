@@ -35,7 +35,7 @@ class SonineSystem {
   std::size_t size() const { return N_; }
   // Fill K, A, z0, Z at the given λ_k (no allocation).
   void assemble(const double* lambda);
-  // c from K c = A (full-pivot LU); throws NumericalError if K is singular.
+  // c from K c = A (full-pivot LU on equilibrated rows: equilibrated_solve.hpp); throws NumericalError if K is singular.
   void solve_cumulants(double* c);
   // ζ_i/ν_ref = z0_i + Σ_j Z_ij c_j.
   void cooling(const double* c, double* zeta) const;
@@ -49,7 +49,7 @@ class SonineSystem {
   std::size_t N_;
   std::shared_ptr<const SoninePairTerms> terms_;
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
-  Eigen::VectorXd A_, z0_, c_;
+  Eigen::VectorXd A_, z0_;
 };
 
 }  // namespace granmix::theory

@@ -158,7 +158,7 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
     // staying, M growing by 2u₁·q h. Near ε = 1 the run to t_end is otherwise ~t_end·loss/2 steps: v2 Fig. 5's sizes at
     // ε = 0.999 took 1.7e5 steps and 14 s, now 1.6 s, the MSD within 2e-12 and the TAMSD within 1e-7 of the fine steps
     // (measured 2026-12-04); where θ creeps to the end (v2 Fig. 5 itself) it never starts: its numbers are bitwise the same.
-    const double left = scaled_time_left(t, t_end, zeta_next, T1), q0 = out.q_start[out.q_start.size() - 2], q1 = g.u1.dot(q);
+    const double left = scaled_time_left(t, t_end, zeta_next, T1), q0 = out.q_start[out.q_start.size() - 2], q1 = out.q_start.back();
     const double drift = std::max({std::abs(mn.theta / m.theta - 1.0), std::abs(mn.nu / m.nu - 1.0), std::abs(zeta_next / zeta - 1.0),
                                    std::abs(q1 / q0 - 1.0)}) / h * left;
     P = next, m = mn, zeta = zeta_next, g = g_next;

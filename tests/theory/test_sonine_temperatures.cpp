@@ -236,7 +236,7 @@ TEST_CASE("velocity-decay hook: VACF MSD equals the settled closed form of physi
 
 TEST_CASE("Sonine cooling rates of 300 species: the same numbers on one thread and on two (rows assembled in parallel)", "[theory]") {
   // SonineSystem::assemble splits its rows over OpenMP threads from 100 species; each row is summed by one thread in a
-  // fixed order, so ζ_k and the cumulants' rates must be bitwise the thread count's to (granmix's reproducibility rule).
+  // fixed order, so ζ_k and the cumulants' rates must not depend on the thread count, bitwise (granmix's reproducibility rule).
   const model::Mixture mix = test::power_law(300);
   const CollisionRates r(mix, model::Restitution::constant(mix.size(), 0.7), model::enskog_contact_values(mix));
   const std::size_t N = mix.size();
