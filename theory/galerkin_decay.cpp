@@ -121,10 +121,15 @@ void GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T, std::
 void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
   // The nodes the assembly needs and the tables lack, computed together on OpenMP threads (each node wholly on one
   // thread: the numbers do not depend on the thread count). A history moves every pair's ratio at once, so most new
-  // nodes come in batches. Then each pair's terms point into the tables (std::map nodes stay where they are).
+  // nodes come in batches. Then each pair's terms point into the tables (std::map nodes stay where they are); a pair
+  // whose stencil has the nodes of the last call keeps that call's pointers (most right-hand sides move no pair to a
+  // new cell: the lookups were 8% of v1 Fig. 8's time).
   const std::size_t N = rates_.size();
+  std::swap(stencils_, last_stencils_), std::swap(terms_, last_terms_), std::swap(first_term_, last_first_term_);
+  const bool have_last = last_first_term_.size() == N * N + 1;
   stencils_.clear();
   first_term_.assign(N * N + 1, 0);
+  relook_.assign(N * N, false);
   std::vector<std::pair<std::size_t, Node>> missing;  // pair k·N + i, node
   for (std::size_t k = 0; k < N; ++k) {
     const bool wanted = species == all_species ? species_[k].diffusive : k == species;
@@ -132,6 +137,11 @@ void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
       const std::size_t p = k * N + i, from = stencils_.size();
       if (wanted) stencil(k, i, T, stencils_);
       first_term_[p + 1] = stencils_.size();
+      const std::size_t count = stencils_.size() - from;
+      bool same = have_last && last_first_term_[p + 1] - last_first_term_[p] == count;
+      for (std::size_t j = 0; same && j < count; ++j) same = stencils_[from + j].first == last_stencils_[last_first_term_[p] + j].first;
+      if (same) continue;
+      relook_[p] = true;
       for (std::size_t j = from; j < stencils_.size(); ++j)
         if (!tables_->pairs[p].count(stencils_[j].first)) missing.push_back({p, stencils_[j].first});  // a pair's stencil nodes are distinct
     }
@@ -139,7 +149,8 @@ void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
   if (!missing.empty()) compute(missing);
   terms_.resize(stencils_.size());
   for (std::size_t p = 0; p < N * N; ++p)
-    for (std::size_t j = first_term_[p]; j < first_term_[p + 1]; ++j) terms_[j] = {&tables_->pairs[p].find(stencils_[j].first)->second, stencils_[j].second};
+    for (std::size_t j = first_term_[p], last = have_last ? last_first_term_[p] : 0; j < first_term_[p + 1]; ++j, ++last)
+      terms_[j] = {relook_[p] ? &tables_->pairs[p].find(stencils_[j].first)->second : last_terms_[last].sources, stencils_[j].second};
 }
 
 void GalerkinDecay::compute(const std::vector<std::pair<std::size_t, Node>>& missing) const {
@@ -165,10 +176,14 @@ void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double*
       for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
       continue;
     }
+    // The three sources of each node in one pass over the entries (this loop reads ~N²·4 nodes per right-hand side).
+    double* o = out.data();
+    const std::size_t entries = std::size_t(out.size());
     for (std::size_t j = first_term_[k * N + i]; j < first_term_[k * N + i + 1]; ++j) {
       const Sources& p = *terms_[j].sources;
-      for (std::size_t s = 0; s < 3; ++s)
-        if (w[s] != 0.0) out += (w[s] * terms_[j].weight) * p[s];
+      const double c0 = w[0] * terms_[j].weight, c2 = w[1] * terms_[j].weight, c3 = w[2] * terms_[j].weight;
+      const double *s0 = p[0].data(), *s2 = p[1].data(), *s3 = p[2].data();
+      for (std::size_t e = 0; e < entries; ++e) o[e] += c0 * s0[e] + c2 * s2[e] + c3 * s3[e];
     }
   }
 }
@@ -200,7 +215,9 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
                                       const double* a2, const double* a3) const {
   const std::size_t N = rates_.size();
   prefetch(T);
-  for (std::size_t k = 0; k < N; ++k) {
+  // The species on OpenMP threads, each wholly on one (its operator reads the tables, ~N·4 nodes of 3 kept² entries:
+  // memory-bound, 2 s of v1 Fig. 8's 43 species on one thread).
+  parallel_each(N, [&](std::size_t k) {
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;
     Eigen::MatrixXd& L = linear_[k];
@@ -209,7 +226,7 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
       L.setConstant(1, 1, -nu1);
       dQ[k] = 3.0 * theta - nu1 * Q[k];
       for (std::size_t p = 1; p < size_; ++p) dQ[p * N + k] = -nu1 * Q[p * N + k];
-      continue;
+      return;
     }
     const auto n = Eigen::Index(sp.kept);
     L.setZero(n, n);
@@ -217,13 +234,13 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
     L -= 0.5 * xi[k] * sp.S;
     L.diagonal().array() += 0.5 * xi[k];
     L = -L;
-    u_.resize(n);
-    for (Eigen::Index p = 0; p < n; ++p) u_[p] = Q[std::size_t(p) * N + k];
-    du_.noalias() = L * u_;
-    du_ += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]);
-    for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du_[p];
+    Eigen::VectorXd u(n);
+    for (Eigen::Index p = 0; p < n; ++p) u[p] = Q[std::size_t(p) * N + k];
+    Eigen::VectorXd du = L * u;
+    du += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]);
+    for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du[p];
     for (std::size_t p = sp.kept; p < size_; ++p) dQ[p * N + k] = 0.0;  // unknowns beyond the kept span stay 0
-  }
+  });
 }
 
 void GalerkinDecay::correlation_jacobian_times(const double* v, double* Jv) const {

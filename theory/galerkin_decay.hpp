@@ -123,6 +123,10 @@ class GalerkinDecay final : public VelocityDecay {
   mutable std::vector<std::pair<Node, double>> stencils_;  // prefetch's, all pairs together
   mutable std::vector<Term> terms_;                         // pair p's: terms_[first_term_[p] … first_term_[p + 1])
   mutable std::vector<std::size_t> first_term_;
+  mutable std::vector<std::pair<Node, double>> last_stencils_;  // the previous prefetch's, whose pointers a pair may keep
+  mutable std::vector<Term> last_terms_;
+  mutable std::vector<std::size_t> last_first_term_;
+  mutable std::vector<bool> relook_;  // per pair: its stencil's nodes changed since the previous prefetch
   mutable std::vector<Eigen::MatrixXd> linear_;  // per species, the last correlation_rates's −(Ã + ξ_k/2) (1×1 −ν_k if not diffusive)
   mutable Eigen::VectorXd u_, du_;
 };

@@ -184,6 +184,36 @@ TEST_CASE("converged memory in time: its Jacobian-times-vector is the Q-derivati
   CHECK(worst < 1e-12 * scale);
 }
 
+TEST_CASE("converged memory in time: a pair keeps its nodes only while its stencil does - rates equal a fresh decay's", "[theory]") {
+  // prefetch keeps the previous call's node pointers for every pair whose stencil has the same nodes, and looks up
+  // the rest. Along a sequence of states that stays in a cell, moves to the next, jumps back and passes through a
+  // one-species operator (the tests' collision_operator, which fills one species' pairs alone), the rates must be a
+  // fresh decay's at the same state bit for bit; a pointer kept across a cell change is off by the change of a node
+  // (~ the grid step, 12%, of the pair's sources).
+  const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
+  const std::vector<double> Tref = settled_temperatures(r).T;
+  const auto store = std::make_shared<GalerkinPairTables>();
+  const GalerkinDecay kept(r, Tref, converged_diffusion_basis, store);
+  const std::size_t N = 2, n = N * kept.modes();
+  const double xi[2] = {0.3, 0.2}, a2[2] = {0.05, -0.1}, a3[2] = {-0.01, 0.02};
+  std::vector<double> Q(n), dQ(n), fresh_dQ(n), nu(N);
+  for (std::size_t j = 0; j < n; ++j) Q[j] = std::sin(1.0 + double(j));
+  // T₂/T₁ = 7.0, 7.05 (same cell of ln ρ, step 1/8), 7.9 (the next), 7.0 again, then 31.7 after a one-species call.
+  for (const double ratio : {7.0, 7.05, 7.9, 7.0, -1.0, 31.7}) {
+    if (ratio < 0.0) {
+      const double T[2] = {1.0, 15.0};
+      (void)kept.collision_operator(1, T, a2, a3);
+      continue;
+    }
+    const double T[2] = {1.0, ratio};
+    kept.correlation_rates(r, T, xi, Q.data(), dQ.data(), nu.data(), a2, a3);
+    const GalerkinDecay fresh(r, Tref, converged_diffusion_basis, store);
+    fresh.correlation_rates(r, T, xi, Q.data(), fresh_dQ.data(), nu.data(), a2, a3);
+    INFO("T2/T1 = " << ratio);
+    CHECK(dQ == fresh_dQ);
+  }
+}
+
 TEST_CASE("converged memory in time: GMRES with its own Jacobian-times-vector gives dense LU's history", "[theory]") {
   // TemperatureHistory's jtimes (the memory's block exact, ln T and the cumulants by a difference quotient, the
   // memory's dependence on T left out) only steers Newton: the solution is the same to CVODE's tolerance. From equal
