@@ -31,14 +31,21 @@ struct Eq17Integrand {
   const TemperatureHistory* h;
   std::size_t k;
   double tau_t;  // τ_k(t)
-  std::vector<double> T;
+  std::unordered_map<double, Eq17Msd::Node>* kept;  // node s₁ ↦ all temperatures and τ_v⁻¹ there
 
   // In s₁: D_k(t₁) [1 − exp(−x)] dt₁/ds₁, x = (τ_k(t) − τ_k(t₁)) / τ̂_v,k(t₁) (v1 Eqs. 17–18).
   double operator()(double s1) {
     const double t1 = h->to_t(s1);
-    h->temperatures(t1, T.data());
     const CollisionRates& r = h->rates();
-    const double inv_tau = r.inv_tau_v_species(k, T.data());
+    auto at = kept->find(s1);
+    if (at == kept->end()) {
+      Eq17Msd::Node fresh{std::vector<double>(h->species()), std::vector<double>(h->species())};
+      h->temperatures(t1, fresh.T.data());
+      r.inv_tau_v_all(fresh.T.data(), fresh.inv_tau.data());  // each species' sum in the order of inv_tau_v_species: the same numbers
+      at = kept->emplace(s1, std::move(fresh)).first;
+    }
+    const std::vector<double>& T = at->second.T;
+    const double inv_tau = at->second.inv_tau[k];
     const double D = T[k] / (inv_tau * r.mixture()[k].mass);                          // v1 Eq. (19)
     const double tau_hat = std::sqrt(T[k] / h->initial()[k]) / inv_tau;               // v1 Eq. (18)
     const double x = std::max(0.0, tau_t - h->reduced_time(t1, k)) / tau_hat;
@@ -48,10 +55,11 @@ struct Eq17Integrand {
 
 }  // namespace
 
-double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
+double Eq17Msd::operator()(std::size_t k, double t) const {
   if (t <= 0.0) return 0.0;
+  if (t != t_) nodes_.clear(), t_ = t;
   model::use_gsl_return_codes();
-  Eq17Integrand integrand{&h, k, h.reduced_time(t, k), std::vector<double>(h.species())};
+  Eq17Integrand integrand{&h_, k, h_.reduced_time(t, k), &nodes_};
   struct Callback {
     Eq17Integrand& f;
     model::GslCallbackGuard guard;  // viscoelastic rates are quadratures that may throw
@@ -65,8 +73,8 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
   // The integrand comes from CVODE's interpolant, which jumps by ~rtol at step boundaries: asking
   // the quadrature for less than 10 rtol is asking for noise. At the default rtol 1e-11 this is
   // 1e-9, a thousand times below the 1e-6 the MSD must reach.
-  const double epsrel = std::max(1e-9, 10.0 * h.rtol());
-  const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, epsrel, model::quadrature_intervals,
+  const double epsrel = std::max(1e-9, 10.0 * h_.rtol());
+  const int status = gsl_integration_qag(&f, 0.0, h_.to_s(t), 0.0, epsrel, model::quadrature_intervals,
                                           GSL_INTEG_GAUSS21, model::quadrature_workspace(model::QuadratureLevel::outer), &result, &abserr);
   cb.guard.rethrow();
   if (status != GSL_SUCCESS)
@@ -74,6 +82,8 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) {
                          ": " + gsl_strerror(status));
   return 6.0 * result;
 }
+
+double msd_eq17(const TemperatureHistory& h, std::size_t k, double t) { return Eq17Msd(h)(k, t); }
 
 double msd_closed(double D0, double tau_v0, double tau0, double t) {
   return msd_increment(VelocityMemory::exponential(D0, tau_v0), tau0, 0.0, t);  // physics.md §3 (v2 Eq. 22)

@@ -194,6 +194,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
   const SettledDiffusion d0 = settled ? level.diffusion_at(rates, T0) : SettledDiffusion{};
   const std::size_t N = rates.size();
   std::vector<Sample> out;
+  const Eq17Msd eq17(h);
   for (double t : s.times) {
     Sample x;
     x.T.resize(N);
@@ -202,7 +203,7 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
     for (std::size_t k = 0; k < N; ++k) {
       if (msd) {
         switch (method) {
-          case MsdMethod::eq17: x.msd.push_back(msd_eq17(h, k, t)); break;
+          case MsdMethod::eq17: x.msd.push_back(eq17(k, t)); break;
           case MsdMethod::vacf: x.msd.push_back(h.msd_vacf(t, k)); break;
           case MsdMethod::longtime: x.msd.push_back(6.0 * h.diffusion_integral(t, k)); break;
           case MsdMethod::closed: x.msd.push_back(msd_increment(d0.memory_of(k), d0.tau0, 0.0, t)); break;

@@ -235,24 +235,39 @@ int TemperatureHistory::derivatives(TemperatureHistory& self, double s, const do
   return 0;
 }
 
-double TemperatureHistory::component(double t, std::size_t c) const {
+const TemperatureHistory::Step* TemperatureHistory::locate(double t, double& x) const {
   if (!(t >= 0.0) || t > t_end_ * (1.0 + 1e-12))
     throw std::out_of_range("temperature history: t = " + std::to_string(t) + " outside [0, " +
                             std::to_string(t_end_) + "]");
   const double s = to_s(t);
-  if (s <= 0.0 || steps_.empty()) return y0_[c];
+  if (s <= 0.0 || steps_.empty()) return nullptr;
   auto it = std::lower_bound(steps_.begin(), steps_.end(), s, [](const Step& st, double v) { return st.s_end < v; });
   if (it == steps_.end()) --it;
-  const double x = s - it->s_end;  // <= 0, within the step
+  x = s - it->s_end;  // <= 0, within the step
+  return &*it;
+}
+
+double TemperatureHistory::component_at(const Step* st, double x, std::size_t c) const {
+  if (!st) return y0_[c];
   double v = 0.0;
-  for (int j = it->order; j >= 0; --j) v = v * x + it->taylor[j * kept_ + c];
+  for (int j = st->order; j >= 0; --j) v = v * x + st->taylor[j * kept_ + c];
   return v;
+}
+
+double TemperatureHistory::component(double t, std::size_t c) const {
+  double x = 0.0;
+  const Step* st = locate(t, x);
+  return component_at(st, x, c);
 }
 
 double TemperatureHistory::temperature(double t, std::size_t k) const { return std::exp(component(t, k)); }
 
 void TemperatureHistory::temperatures(double t, double* T) const {
-  for (std::size_t k = 0; k < N_; ++k) T[k] = temperature(t, k);
+  // The step found once for all species (Eq. 17's quadrature asks for all N at each node: per species, the search and
+  // the clock's log1p were half of a 500-species MSD's time).
+  double x = 0.0;
+  const Step* st = locate(t, x);
+  for (std::size_t k = 0; k < N_; ++k) T[k] = std::exp(component_at(st, x, k));
 }
 
 double TemperatureHistory::reduced_time(double t, std::size_t k) const {
@@ -276,7 +291,9 @@ double TemperatureHistory::state(double t, std::size_t j) const {
 }
 
 void TemperatureHistory::states(double t, double* z) const {
-  for (std::size_t j = 0; j < nz_; ++j) z[j] = component(t, z_at_ + j);
+  double x = 0.0;
+  const Step* st = locate(t, x);
+  for (std::size_t j = 0; j < nz_; ++j) z[j] = component_at(st, x, z_at_ + j);
 }
 
 }  // namespace granmix::theory

@@ -89,6 +89,8 @@ class TemperatureHistory {
     std::vector<double> taylor;  // (order+1) blocks of kept_ values, y^(j)(s_end)/j!
   };
   double component(double t, std::size_t index) const;
+  const Step* locate(double t, double& x) const;  // the step holding t (null: before the first), x = s − its s_end
+  double component_at(const Step* step, double x, std::size_t index) const;
   static int rhs(double s, N_Vector y, N_Vector dy, void* self);
   // correlation = false: only the unknowns before the velocity correlation's (ln T, z, τ, I).
   static int derivatives(TemperatureHistory& self, double s, const double* y, double* dy, bool correlation = true);

@@ -1,11 +1,18 @@
 // Mean-squared displacement: Eq. (17) against the closed form, the ballistic and ln t limits, the
 // VACF ODE, the viscoelastic t^(1/6) law, TAMSD identities and the tracer limit.
 #include <catch2/catch.hpp>
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include <algorithm>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <cstdio>
+#include <limits>
+#include <vector>
 
+#include "model/enskog.hpp"
+#include "model/gsl_setup.hpp"
 #include "theory/diffusion.hpp"
 #include "theory/msd.hpp"
 #include "theory/velocity_memory.hpp"
@@ -40,6 +47,63 @@ TEST_CASE("Eq. (17) equals the closed form for settled ratios to 1e-6 - and so d
     std::printf("%zu species: Eq. (17) vs closed %.2e, VACF ODE vs closed %.2e\n", r.size(), worst17, worst_vacf);
     CHECK(worst17 <= 1e-6);    // the issue's bound; quadrature asks 1e-9, CVODE 1e-11
     CHECK(worst_vacf <= 1e-6);  // τ̂ is constant in the settled state: the two forms coincide
+  }
+}
+
+namespace {
+
+// v1 Eq. (17) species by species, each node's T and τ_v,k⁻¹ computed afresh (inv_tau_v_species): the computation
+// msd_eq17 made before it kept nodes, the same quadrature (QAG, 21 points, the same requested error).
+double eq17_afresh(const TemperatureHistory& h, std::size_t k, double t) {
+  struct Integrand {
+    const TemperatureHistory& h;
+    std::size_t k;
+    double tau_t;
+  } in{h, k, h.reduced_time(t, k)};
+  gsl_function f{[](double s1, void* p) {
+                   const Integrand& c = *static_cast<const Integrand*>(p);
+                   const double t1 = c.h.to_t(s1);
+                   std::vector<double> T(c.h.species());
+                   c.h.temperatures(t1, T.data());
+                   const double inv_tau = c.h.rates().inv_tau_v_species(c.k, T.data());
+                   const double D = T[c.k] / (inv_tau * c.h.rates().mixture()[c.k].mass);
+                   const double tau_hat = std::sqrt(T[c.k] / c.h.initial()[c.k]) / inv_tau;
+                   const double x = std::max(0.0, c.tau_t - c.h.reduced_time(t1, c.k)) / tau_hat;
+                   return D * -std::expm1(-x) * c.h.dt_ds(s1);
+                 },
+                 &in};
+  double result = 0.0, abserr = 0.0;
+  gsl_integration_workspace* w = gsl_integration_workspace_alloc(model::quadrature_intervals);
+  const int status = gsl_integration_qag(&f, 0.0, h.to_s(t), 0.0, std::max(1e-9, 10.0 * h.rtol()), model::quadrature_intervals, GSL_INTEG_GAUSS21, w,
+                                         &result, &abserr);
+  gsl_integration_workspace_free(w);
+  REQUIRE(status == GSL_SUCCESS);
+  return 6.0 * result;
+}
+
+}  // namespace
+
+TEST_CASE("Eq. (17) with kept quadrature nodes is the species-by-species quadrature bit for bit", "[theory]") {
+  // msd_eq17 and Eq17Msd keep each node's temperatures and τ_v⁻¹ (the symmetric pair pass) for the next species; its
+  // sums run in the order of inv_tau_v_species, so the MSD must not move in the last bit against the quadrature that
+  // computes every node afresh. A node's T or τ_v⁻¹ of the wrong species or time moves it by O(1). Constant ε (a
+  // 30-species power law from equal temperatures, the partners far from settled) and viscoelastic ε (per-pair
+  // moments); times visited out of order.
+  const CollisionRates constant(test::power_law(30), model::Restitution::constant(30, 0.5), model::dilute_contact_values(30));
+  const CollisionRates visco = test::viscoelastic_rates({{1, 1, 0.1}, {4, 1.5, 0.05}, {20, 2.5, 0.02}}, 0.09);
+  for (const CollisionRates* r : {&constant, &visco}) {
+    TemperatureOptions o;
+    o.reduced_time = true;
+    o.rtol = 1e-8;
+    const TemperatureHistory h(*r, std::vector<double>(r->size(), 1.0), 1e9, o);
+    const Eq17Msd eq17(h);
+    for (double t : {3.0, 1e6, 0.01, 3.0, 1e9})
+      for (std::size_t k = 0; k < r->size(); ++k) {
+        INFO(r->size() << " species, k = " << k << ", t = " << t);
+        const double afresh = eq17_afresh(h, k, t);
+        CHECK(eq17(k, t) == afresh);
+        CHECK(msd_eq17(h, k, t) == afresh);
+      }
   }
 }
 
