@@ -11,6 +11,7 @@
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
 #include "msd.hpp"
+#include "parallel_each.hpp"
 #include "shell_average.hpp"
 #include "sonine_hcs.hpp"
 #include "tamsd.hpp"
@@ -75,16 +76,22 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   auto maxwell_of = [](const model::Scene& p) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), true); };
   const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0)).gamma() : nan;
   const double gamma0_maxwell = relative ? maxwell_of(model::sweep_point(s, 0.0)).gamma() : nan;
-  for (double x : sw.values) {
+  // The points on OpenMP threads, each wholly on one with a level object of its own (a level keeps a memo: one per
+  // thread), their rows then in sweep order: the numbers do not depend on the thread count. (v1 Fig. 7's 51 points
+  // each solve the converged tracer problem and an increment history.)
+  std::vector<std::vector<std::vector<double>>> rows(sw.values.size());
+  parallel_each(sw.values.size(), [&](std::size_t j) {
+    const double x = sw.values[j];
+    const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
     if (o.d_ratio) {
       const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
-      d = level.diffusion_at(rates, level.settled_temperatures(rates));
+      d = own->diffusion_at(rates, own->settled_temperatures(rates));
     }
-    const std::vector<double> inc = increments ? increment_ratios(p, level) : std::vector<double>{};
+    const std::vector<double> inc = increments ? increment_ratios(p, *own) : std::vector<double>{};
     SonineHcs sonine, maxwell;
-    if (o.gamma || o.cumulant) sonine = sonine_of(p);
+    if (o.gamma || o.cumulant) sonine = own->hcs(scene_rates(p, p.mixture, p.restitution));
     if (o.gamma) maxwell = maxwell_of(p);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
@@ -93,9 +100,11 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
       if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0), row.push_back(k ? nan : maxwell.gamma() / gamma0_maxwell);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
-      t.rows.push_back(std::move(row));
+      rows[j].push_back(std::move(row));
     }
-  }
+  });
+  for (auto& point : rows)
+    for (auto& row : point) t.rows.push_back(std::move(row));
   return t;
 }
 
