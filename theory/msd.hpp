@@ -26,7 +26,8 @@ double msd_eq17(const TemperatureHistory& h, std::size_t k, double t);
 // The same for many species at one time: each quadrature node's temperatures and τ_v⁻¹ (all N at once, the
 // symmetric pair pass) are kept for the next species, whose quadrature meets the same nodes (GSL's rule and
 // bisections on the same [0, s(t)]: 500 species at 16 times evaluate 660702 integrands at 1890 distinct nodes).
-// Results are msd_eq17's bit for bit. Not thread-safe (the kept nodes): one per thread; kept only for the last t asked.
+// The numbers are those of a quadrature that computes every node afresh, bit for bit (tests/theory/test_msd.cpp);
+// msd_eq17 is one species of it. Not thread-safe (the kept nodes): one per thread; kept only for the last t asked.
 class Eq17Msd {
  public:
   explicit Eq17Msd(const TemperatureHistory& h) : h_(h) {}
