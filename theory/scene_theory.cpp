@@ -72,9 +72,9 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   if (relative) t.columns.push_back("gamma_ratio"), t.columns.push_back("gamma_ratio_maxwell");
   if (o.cumulant) t.columns.push_back("c");
   // The level's HCS (MG's first Sonine, or order 3) and the Maxwellian one beside it.
-  auto sonine_of = [&](const model::Scene& p) { return level.hcs(scene_rates(p, p.mixture, p.restitution)); };
+  auto sonine_of = [](const TheoryLevel& l, const model::Scene& p) { return l.hcs(scene_rates(p, p.mixture, p.restitution)); };
   auto maxwell_of = [](const model::Scene& p) { return sonine_hcs(p.mixture, p.restitution, scene_contact_values(p), true); };
-  const double gamma0 = relative ? sonine_of(model::sweep_point(s, 0.0)).gamma() : nan;
+  const double gamma0 = relative ? sonine_of(level, model::sweep_point(s, 0.0)).gamma() : nan;
   const double gamma0_maxwell = relative ? maxwell_of(model::sweep_point(s, 0.0)).gamma() : nan;
   // The points on OpenMP threads, each wholly on one with a level object of its own (a level keeps a memo: one per
   // thread), their rows then in sweep order: the numbers do not depend on the thread count. (v1 Fig. 7's 51 points
@@ -91,7 +91,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     }
     const std::vector<double> inc = increments ? increment_ratios(p, *own) : std::vector<double>{};
     SonineHcs sonine, maxwell;
-    if (o.gamma || o.cumulant) sonine = own->hcs(scene_rates(p, p.mixture, p.restitution));
+    if (o.gamma || o.cumulant) sonine = sonine_of(*own, p);
     if (o.gamma) maxwell = maxwell_of(p);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
