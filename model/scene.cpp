@@ -190,7 +190,7 @@ Observables read_observables(TomlFields& f) {
 
 TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   TheorySettings s;
-  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-converged", "kinetic-converged-cooling3"},
+  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3"},
                      "paper");
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");

@@ -296,6 +296,11 @@ model::Scene in_natural_units(const model::Scene& scene, double unit) {
 
 }  // namespace
 
+bool theory_uses_rtol(const model::Scene& s) {
+  if (s.observables.distribution_settled && !s.theory.sweep) return false;
+  return !s.theory.sweep || s.observables.d_ratio;  // a D-ratio sweep may follow increment histories in time
+}
+
 TheoryResult run_level(const model::Scene& scene, const std::string& level) {
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;

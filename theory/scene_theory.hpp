@@ -20,6 +20,9 @@ struct TheoryResult {
 // tables: the Galerkin pair tables its levels share (null: a store of its own); a caller that runs the same scene
 // again (compare's error estimate at 100× tighter rtol) passes the same store, so the tables are built once.
 TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairTables> tables = nullptr);
+// Whether the scene's curves come from integrations in time (rtol applies): not for a sweep of settled γ or c alone,
+// nor for settled distributions — those are algebraic HCS, the same at any rtol (compare skips its rtol/100 rerun).
+bool theory_uses_rtol(const model::Scene& scene);
 // One level's curves alone (level: paper, kinetic, kinetic-sonineN; no companion columns), timed:
 // `granmix bench theory` compares the levels' cost scene by scene.
 TheoryResult run_level(const model::Scene& scene, const std::string& level);

@@ -130,10 +130,22 @@ CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(gol
   }
 }
 
-SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas) {
+SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
   const model::Mixture& mix = rates.mixture();
-  const double s = mix.sigma(1, 0), m1 = mix[0].mass, m2 = mix[1].mass;
-  return {m1, m2, std::sqrt(1.0 / m1), m1 * (1.0 + rates.law().eps(1, 0)) / (m1 + m2), mix[0].density * s * s * rates.chi(1, 0), gas};
+  const double s = mix.sigma(k, j), mj = mix[j].mass, mk = mix[k].mass;
+  return {mj, mk, std::sqrt(Tj / mj), mj * (1.0 + rates.law().eps(k, j)) / (mj + mk), mix[j].density * s * s * rates.chi(k, j), partner};
+}
+
+SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas) { return speed_grid_pair(rates, 1, 0, 1.0, gas); }
+
+Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, const SpeedGrid& g, double zeta) {
+  Eigen::MatrixXd A = collisions + 0.5 * zeta * g.drift;
+  const auto last = A.rows() - 1;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(A.rows());
+  A.row(last) = g.mass.transpose(), rhs[last] = 1.0;
+  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+  if (!lu.isInvertible()) return {};
+  return lu.solve(rhs);
 }
 
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule) {

@@ -36,6 +36,9 @@ struct SpeedGridProblem {
 };
 // rates: the gas (0) and the intruder (1), constant restitution.
 SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas);
+// Any pair of a mixture (converged_hcs.hpp): species k the one whose density is solved for, partner j (a Maxwellian at
+// T_j times its Sonine shape) in its place as the "gas"; the same numbers as speed_grid_problem for k = 1, j = 0, T_j = 1.
+SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner);
 
 // The assembled weak form on K knot intervals of [0, U] (K + 3 splines), and the splines' integrals against what the
 // solutions are read through: ∫N_j u^(2n) du (n = 0 … 3), ∫N_j G du (G(u) the energy the gas gains per unit time from an
@@ -49,6 +52,10 @@ struct SpeedGrid {
 // The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
 // thread count).
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule);
+
+// The stationary speed density of (collisions + (ζ/2) drift) P = 0 with ∫P = 1: the tests sum to ψ = 1 (partition of
+// unity), whose equation is 0 = 0, so the last one gives way to the normalisation. Empty where the system is singular.
+Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, const SpeedGrid& g, double zeta);
 
 // What a speed density says, at its own normalisation: θ = m₂⟨u²⟩/3 (T₂/T₁), the cumulants a₂, a₃ at θ, the gas's
 // energy gain per intruder and unit time, and ν̄ = −⟨H⟩/⟨u²⟩ (the rate at which the collisions erase the intruder's

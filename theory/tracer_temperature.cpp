@@ -26,14 +26,9 @@ constexpr double max_heating_share = 0.1;  // converged_intruder_temperature's r
 // The stationary speed density on K knot intervals of [0, U] (NaN θ where the weak form is singular).
 SpeedMoments solve(const SpeedGridProblem& p, double zeta, double U, std::size_t K, const CollisionRule& rule) {
   const SpeedGrid g = assemble_speed_grid(p, U, K, rule);
-  Eigen::MatrixXd A = g.collisions + 0.5 * zeta * g.drift;
-  // The tests sum to ψ = 1 (partition of unity), whose equation is 0 = 0: the last one gives way to ∫P = 1.
-  const auto last = A.rows() - 1;
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(A.rows());
-  A.row(last) = g.mass.transpose(), rhs[last] = 1.0;
-  const Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-  if (!lu.isInvertible()) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 0.0, 0.0};
-  return speed_moments(g, p, lu.solve(rhs));
+  const Eigen::VectorXd P = stationary_speed_density(g.collisions, g, zeta);
+  if (P.size() == 0) return {std::numeric_limits<double>::quiet_NaN(), 0.0, 0.0, 0.0, 0.0, 0.0};
+  return speed_moments(g, p, P);
 }
 
 // The grid placed for θ (its domain and knots scale with √(θ/m₂)), step_scale times the knots' spacing.

@@ -1,0 +1,111 @@
+// The mixture's HCS without the Sonine truncation of its own distributions (theory/converged_hcs.hpp): an exact limit
+// (elastic: equal temperatures, Maxwellian), the tracer limit's intruder solved by the other code path
+// (tracer_temperature.hpp, ζ given instead of found), and MG Figs. 4–5's DSMC.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <cstdio>
+
+#include "model/mixture_generators.hpp"
+#include "theory/converged_hcs.hpp"
+#include "theory/tracer_temperature.hpp"
+#include "theory_fixtures.hpp"
+
+using namespace granmix;
+using namespace granmix::theory;
+
+namespace {
+
+CollisionRates mg(double mu, double delta, double alpha) {
+  return CollisionRates(model::montanero_garzo_binary(mu, delta, 1.0, 0.0), model::Restitution::constant(2, alpha), model::dilute_contact_values(2));
+}
+
+}  // namespace
+
+TEST_CASE("converged HCS: an elastic mixture settles at equal temperatures, Maxwellian", "[theory]") {
+  // Detailed balance for any masses and sizes: a momentum transfer with the masses swapped (β of the wrong species)
+  // or a partner at the wrong temperature misses by O(1). What the grid leaves (the spline Maxwellian is not exact;
+  // ζ, found from the temperature, absorbs it) must lie within the solver's own grid estimate.
+  const ConvergedHcs c = converged_hcs(mg(4.0, 0.25, 1.0), true);
+  std::printf("elastic MG mixture mu 4, delta 0.25: gamma - 1 = %.1e (grid estimate %.1e), c %.1e %.1e, a3 %.1e %.1e, zeta* %.1e\n", c.hcs.gamma() - 1.0,
+              c.grid_change.T, c.hcs.c[0], c.hcs.c[1], c.hcs.a3[0], c.hcs.a3[1], c.hcs.zeta_star);
+  CHECK(std::abs(c.hcs.gamma() - 1.0) < c.grid_change.T);
+  CHECK(c.grid_change.T < 1e-4);
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(std::abs(c.hcs.c[k]) < 3e-4);  // c ≈ 0.2 at α = 0.3
+    CHECK(std::abs(c.hcs.a3[k]) < 1e-4);
+  }
+  CHECK(std::abs(c.hcs.zeta_star) < 1e-4);  // ζ* ≈ 0.9 at α = 0.5
+}
+
+TEST_CASE("converged HCS: a rare species is the tracer limit's intruder in the converged gas", "[theory]") {
+  // n₂/n₁ = 1e-8: the intruder's effect on the gas is ~1e-8. The tracer code solves the intruder in a gas of the shape
+  // and cooling rate this solver found (ζ given, θ the result); the mixture solver found ζ from the equal-rates
+  // condition. They share the grid's assembly, not the self-consistency, normalisation or MG units: a wrong ζ*
+  // conversion, a mixed-up species or partner temperature moves θ by far more than 1e-5.
+  const CollisionRates r = test::constant_rates({{1.0, 1.0, 0.1}, {4.0, std::cbrt(4.0), 1e-9}}, 0.7);
+  const ConvergedHcs c = converged_hcs(r);
+  const model::Mixture& mix = r.mixture();
+  const double m1 = mix[0].mass, m2 = mix[1].mass, v0sq = 2.0 * (m1 + m2) / (m1 * m2);
+  // ζ* back to code units at T₁ = 1: ζ(⟨T⟩ = 1) = ζ* n σ₁₂² v0, and ζ ∝ √T.
+  const double zeta1 = c.hcs.zeta_star * mix.total_density() * std::pow(mix.sigma(0, 1), 2) * std::sqrt(v0sq) / std::sqrt(c.hcs.T[0]);
+  const double theta = c.hcs.T[1] / c.hcs.T[0];
+  const TracerTemperature t = converged_tracer_temperature(r, zeta1, {1.0, 0.5 * c.hcs.c[0], c.hcs.a3[0]}, theta);
+  std::printf("rare species m2 = 4, eps = 0.7: mixture solver theta = %.8f, tracer solver %.8f; a2 %.6f / %.6f; gas a2 %.6f\n", theta, t.theta,
+              0.5 * c.hcs.c[1], t.a2, 0.5 * c.hcs.c[0]);
+  CHECK(std::abs(t.theta / theta - 1.0) < 1e-5);
+  CHECK(std::abs(t.a2 - 0.5 * c.hcs.c[1]) < 1e-5);
+  CHECK(std::abs(t.a3 - c.hcs.a3[1]) < 1e-5);
+}
+
+TEST_CASE("converged HCS: MG gamma within 0.3% of DSMC at all 18 points of Figs. 4-5", "[theory][slow]") {
+  // DSMC: the mean of the paper-fidelity runs, seeds 1–3, of mg-fig04-mu* and mg-fig05-delta* (2e4 particles x 64
+  // replicas each; docs/paper-fidelity.md; σ of the mean ≈ 0.1%), as scripts/mg_gamma_sonine_orders.py holds them.
+  // The first Sonine (MG App. A) is within 0.3% at 15 of the 18 (worst −0.43%, μ = 4, δ = 0.25, α = 0.5), orders 3 and 4
+  // at 15 and 17; issue 12 asks 0.3% at every point. (~17 s: [slow], not under the sanitizers.)
+  struct Point {
+    double mu, delta, gamma[3];
+  };
+  const Point points[] = {{2, 2, {1.53621, 1.34396, 1.11925}},      {10, 2, {5.31174, 3.79934, 1.94476}}, {0.1, 2, {0.12653, 0.18872, 0.45708}},
+                          {4, 0.25, {3.45248, 2.38897, 1.35309}}, {4, 1, {2.69027, 2.05299, 1.32944}},   {4, 4, {2.36696, 1.88790, 1.30998}}};
+  const double alphas[3] = {0.3, 0.5, 0.8};
+  double worst = 0.0, worst_sonine = 0.0;
+  for (const Point& p : points)
+    for (int a = 0; a < 3; ++a) {
+      const CollisionRates r = mg(p.mu, p.delta, alphas[a]);
+      const double sonine = sonine_hcs(r.mixture(), r.law(), r.contact_values()).gamma() / p.gamma[a] - 1.0;
+      const ConvergedHcs c = converged_hcs(r);
+      const double gap = c.hcs.gamma() / p.gamma[a] - 1.0;
+      std::printf("MG mu %g delta %g alpha %g: DSMC gamma %.5f, first Sonine %+.3f%%, converged %+.3f%% (%d passes)\n", p.mu, p.delta, alphas[a],
+                  p.gamma[a], 100.0 * sonine, 100.0 * gap, c.passes);
+      worst = std::max(worst, std::abs(gap)), worst_sonine = std::max(worst_sonine, std::abs(sonine));
+      CHECK(std::abs(gap) < 0.003);
+    }
+  std::printf("MG Figs. 4-5, 18 points: converged HCS within %.3f%% of DSMC, first Sonine within %.3f%%\n", 100.0 * worst, 100.0 * worst_sonine);
+}
+
+TEST_CASE("converged HCS: the model error parts of the MG scenes' tolerances", "[.tolerances]") {
+  // Not run by ctest (hidden tag): `granmix_tests_theory "[.tolerances]"` prints, at every DSMC point of the scenes
+  // judged at the level kinetic-hcs-converged, the two computed parts of γ's and c's model error (converged_hcs.hpp):
+  // the grid's (knots 3/2 apart, the 16-point rule) and the partners' truncation (the a₃ term's size). A scene's
+  // `relative` is the largest sum over its points (compare/scenes/mg-fig0[245]*.toml). ~2 min.
+  struct Scene {
+    const char* name;
+    double mu, delta, alpha[3];
+  };
+  const Scene scenes[] = {{"mg-fig02", 2, 1, {0.3, 0.5, 0.9}},        {"mg-fig04-mu0.1", 0.1, 2, {0.3, 0.5, 0.8}},
+                          {"mg-fig04-mu2", 2, 2, {0.3, 0.5, 0.8}},    {"mg-fig04-mu10", 10, 2, {0.3, 0.5, 0.8}},
+                          {"mg-fig05-delta0.25", 4, 0.25, {0.3, 0.5, 0.8}}, {"mg-fig05-delta1", 4, 1, {0.3, 0.5, 0.8}},
+                          {"mg-fig05-delta4", 4, 4, {0.3, 0.5, 0.8}}};
+  for (const Scene& s : scenes) {
+    double gamma_error = 0.0, c_error = 0.0;
+    for (double alpha : s.alpha) {
+      const ConvergedHcs c = converged_hcs(mg(s.mu, s.delta, alpha), true);
+      std::printf("%s alpha %g: gamma %.5f (grid %.1e, partners' a3 %.1e), c %.4f %.4f (grid %.1e, partners' a3 %.1e)\n", s.name, alpha, c.hcs.gamma(),
+                  c.grid_change.T, c.partner_a3_effect.T, c.hcs.c[0], c.hcs.c[1], c.grid_change.a2, c.partner_a3_effect.a2);
+      gamma_error = std::max(gamma_error, c.grid_change.T + c.partner_a3_effect.T);
+      c_error = std::max(c_error, c.grid_change.a2 + c.partner_a3_effect.a2);
+    }
+    std::printf("%s: largest model error of gamma %.2e, of c %.2e\n", s.name, gamma_error, c_error);
+  }
+}

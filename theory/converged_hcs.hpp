@@ -1,0 +1,41 @@
+#pragma once
+// The homogeneous cooling state of a mixture without the Sonine truncation of the species' own distributions (issue
+// 12: MG γ within 0.3%, MG c_k). Every species k has its stationary speed density in the scaled frame,
+//   (ζ/2) ∂_v·(v φ_k) = Σ_j J_kj[φ_k; f_j],
+// solved on cubic B-splines exactly as the tracer limit's intruder (tracer_speed_grid.hpp, tracer_temperature.hpp:
+// U = 7 √(T_k/m_k), 8 knots per √(T_k/m_k), the 12-point collision rule), with every partner j — species k itself
+// included — a Maxwellian at T_j times 1 + a₂,j S₂ + a₃,j S₃, a₂,j and a₃,j the cumulants of j's own solved density.
+// Self-consistency, per pass: each species' ζ_k is the cooling rate at which its solved temperature is the T_k its
+// partners were given (a secant in ζ on the assembled operator: the collisions do not depend on ζ); the HCS asks
+// ζ_k = ζ_0, so ln(T_k/T_0) take a quasi-Newton step (the Maxwellian rates' Jacobian, Broyden-updated) and the shapes
+// are those just solved. The start is the order-3 Sonine HCS (sonine_hcs.hpp), so the passes are few (7–12, ~0.1 s each for two species on 2 cores).
+// What is still truncated: the partners' shapes beyond a₃ (a species sees its partners through a₂, a₃ only; its own
+// density is the grid's). `partner_a3_effect` measures that part: the same state with partners of a₂ alone.
+// Constant restitution only (a viscoelastic mixture has no settled state).
+#include <vector>
+
+#include "collision_rates.hpp"
+#include "sonine_hcs.hpp"
+
+namespace granmix::theory {
+
+// How far a variant of the solution moves it: the largest relative change of any T_k/T_0 (one species: of ζ*), and of
+// any a₂,k (c_k).
+struct Change {
+  double T = 0.0, a2 = 0.0;
+};
+
+struct ConvergedHcs {
+  SonineHcs hcs;  // T_k (Σ x_k T_k = 1), c_k = 2a₂,k, a₃,k, λ_k, β_k, ζ* in MG's units (sonine_hcs.hpp)
+  int passes = 0;
+  // Error estimates, filled only by converged_hcs(…, true): the grid (twice the larger change with knots 3/2 as far
+  // apart and with the 16-point collision rule), and the partners seen through a₂ alone (the size of the last partner term
+  // kept, a₃: the estimate of the a₄ … terms left out, smaller still where the series settles).
+  Change grid_change, partner_a3_effect;
+};
+
+// rates: constant restitution, χ as given. check: also compute the two error estimates (three more solves).
+// Throws std::invalid_argument for a viscoelastic law, NumericalError where the passes do not settle.
+ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
+
+}  // namespace granmix::theory
