@@ -17,7 +17,10 @@
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
 // "one_species_truncation" {eps, a2_sonine1, a2_sonine2, a3_sonine2, a3_given_a2_sonine1, a2_relative_change} of one species at
 // that ε (a proxy for near-equal species, not a mixture calculation). Fields that cannot be computed are
-// omitted, never filled.
+// omitted, never filled. With --converged (up to max_converged_hcs_species species) also the HCS without the Sonine
+// truncation (theory/converged_hcs.hpp, ~1 s for a binary, ~4 s with its error estimate): per species
+// T_ratio_converged, c_converged, a3_converged; zeta_star_converged; converged_error {T_ratio, c} (the grid's and the
+// partners' truncation, summed: relative, the largest over the species) and converged_passes.
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
@@ -30,6 +33,7 @@
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
+#include "theory/converged_hcs.hpp"
 #include "theory/diffusion.hpp"
 #include "theory/sonine2_diffusion.hpp"
 #include "theory/sonine_hcs.hpp"
@@ -44,12 +48,14 @@ namespace {
 // The converged tracer problem costs ~1 ms per species and partner (its change comes from the leading block of the
 // same assembly): up to this many species (a 20-species gas, 0.5 s).
 constexpr std::size_t max_converged_species = 20;
+// The converged HCS: N² pair grids per pass, ~25 ms each.
+constexpr std::size_t max_converged_hcs_species = 10;
 
 struct HcsOptions {
   std::vector<double> mass, diameter, density;
   double eps = -1.0, nstar = 0.0;
   double mu = 0, delta = 0, w = 0, alpha = -1, alpha11 = -1, alpha22 = -1, alpha12 = -1;
-  bool json = false;
+  bool json = false, converged = false;
 };
 
 void require(bool ok, const std::string& msg) {
@@ -130,6 +136,12 @@ int run(const HcsOptions& o) {
     }
   }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
+  std::optional<theory::ConvergedHcs> grid;
+  if (o.converged) {
+    require(mix.size() <= max_converged_hcs_species, "--converged: at most " + std::to_string(max_converged_hcs_species) + " species (N² speed grids per pass; " +
+                                                         std::to_string(mix.size()) + " given)");
+    grid = theory::converged_hcs(rates, true);
+  }
   const double eps_one = listed ? o.eps : o.alpha;
   std::optional<theory::SonineTruncation> trunc;
   if (eps_one >= 0) trunc = theory::sonine_truncation(eps_one);
@@ -148,6 +160,7 @@ int run(const HcsOptions& o) {
       if (std::isfinite(converged[k])) s["D_converged_factor"] = converged[k], s["D_converged_change"] = change[k];
       if (trunc && mix.size() == 1) s["a2_sonine2"] = trunc->linear.a2, s["a3_sonine2"] = trunc->linear.a3;
       if (third) s["T_ratio_sonine3"] = third->T[k] / third->T[0], s["c_sonine3"] = third->c[k], s["a3_sonine3"] = third->a3[k];
+      if (grid) s["T_ratio_converged"] = grid->hcs.T[k] / grid->hcs.T[0], s["c_converged"] = grid->hcs.c[k], s["a3_converged"] = grid->hcs.a3[k];
       if (k == 1 && std::isfinite(tracer.theta))
         s["T_ratio_tracer_converged"] = tracer.theta, s["T_ratio_tracer_converged_change"] = tracer.change;
       if (k == 1 && std::isfinite(intruder.theta))
@@ -158,6 +171,11 @@ int run(const HcsOptions& o) {
     if (has_tau0) j["tau0"] = d.tau0;
     j["zeta_star"] = sonine.zeta_star;
     if (third) j["zeta_star_sonine3"] = third->zeta_star;
+    if (grid) {
+      j["zeta_star_converged"] = grid->hcs.zeta_star;
+      j["converged_error"] = {{"T_ratio", grid->grid_change.T + grid->partner_a3_effect.T}, {"c", grid->grid_change.a2 + grid->partner_a3_effect.a2}};
+      j["converged_passes"] = grid->passes;
+    }
     if (trunc && mix.size() > 1) {
       nlohmann::ordered_json t{{"eps", eps_one}, {"a2_sonine1", trunc->a2_first}, {"a2_sonine2", trunc->linear.a2}, {"a3_sonine2", trunc->linear.a3},
                                {"a3_given_a2_sonine1", trunc->a2_fixed.a3}};
@@ -179,6 +197,13 @@ int run(const HcsOptions& o) {
     for (std::size_t k = 0; k < mix.size(); ++k)
       std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, third->T[k] / third->T[0], third->c[k], third->a3[k]);
     std::printf("  zeta_star %.12g\n", third->zeta_star);
+  }
+  if (grid) {
+    std::printf("converged HCS (no Sonine truncation of the species' own distributions):");
+    for (std::size_t k = 0; k < mix.size(); ++k)
+      std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, grid->hcs.T[k] / grid->hcs.T[0], grid->hcs.c[k], grid->hcs.a3[k]);
+    std::printf("  zeta_star %.12g; relative error T_ratio %.2g, c %.2g (grid + partners' truncation)\n", grid->hcs.zeta_star,
+                grid->grid_change.T + grid->partner_a3_effect.T, grid->grid_change.a2 + grid->partner_a3_effect.a2);
   }
   if (std::isfinite(tracer.theta))
     std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change with a step 3/2 as long %.3g)\n",
@@ -214,6 +239,7 @@ std::function<int()> add_hcs_command(CLI::App& app) {
   cmd->add_option("--alpha12", o->alpha12, "MG restitution 1-2");
   cmd->add_option("--nstar", o->nstar, "reduced density n σ12³ (Enskog χ from MG Eq. 26); 0 = dilute");
   cmd->add_flag("--json", o->json, "one JSON object on stdout");
+  cmd->add_flag("--converged", o->converged, "also the HCS without the Sonine truncation (~1-4 s for a binary)");
   return [o]() { return run(*o); };
 }
 
