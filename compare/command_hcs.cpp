@@ -135,13 +135,14 @@ int run(const HcsOptions& o) {
     } catch (const NumericalError&) {  // the grid or the gas's rate did not settle: omitted
     }
   }
-  // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
+  // The HCS without the Sonine truncation, on request (theory/converged_hcs.hpp).
   std::optional<theory::ConvergedHcs> grid;
   if (o.converged) {
     require(mix.size() <= max_converged_hcs_species, "--converged: at most " + std::to_string(max_converged_hcs_species) + " species (N² speed grids per pass; " +
                                                          std::to_string(mix.size()) + " given)");
     grid = theory::converged_hcs(rates, true);
   }
+  // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
   const double eps_one = listed ? o.eps : o.alpha;
   std::optional<theory::SonineTruncation> trunc;
   if (eps_one >= 0) trunc = theory::sonine_truncation(eps_one);
@@ -173,7 +174,10 @@ int run(const HcsOptions& o) {
     if (third) j["zeta_star_sonine3"] = third->zeta_star;
     if (grid) {
       j["zeta_star_converged"] = grid->hcs.zeta_star;
-      j["converged_error"] = {{"T_ratio", grid->grid_change.T + grid->partner_a3_effect.T}, {"c", grid->grid_change.a2 + grid->partner_a3_effect.a2}};
+      nlohmann::ordered_json e{{"T_ratio", grid->grid_change.T + grid->partner_a3_effect.T}};
+      const double c_error = grid->grid_change.a2 + grid->partner_a3_effect.a2;  // relative: not finite where a c is exactly 0
+      if (std::isfinite(c_error)) e["c"] = c_error;
+      j["converged_error"] = e;
       j["converged_passes"] = grid->passes;
     }
     if (trunc && mix.size() > 1) {

@@ -3,6 +3,7 @@
 // (tracer_temperature.hpp, ζ given instead of found), and MG Figs. 4–5's DSMC.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
