@@ -92,7 +92,8 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
     if (!p.species.empty() && std::find(p.species.begin(), p.species.end(), std::size_t(k)) == p.species.end()) continue;
     const std::string label = k == 0 ? (p.y == "gamma" ? "T1/T2" : p.y == "gamma_ratio" ? "gamma(n*)/gamma(0)" : "total") : fmt::format("species {}", k);
     const int ls = k == 0 ? 9 : 1 + (k - 1) % 4;
-    plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} title '{} theory'", cycle.size(),
+    // Solid (dt 1): the black style 9 of γ and totals is dashed by default, and the paper level beside it is dashed too.
+    plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} dt 1 title '{} theory'", cycle.size(),
                                 o, p.x, p.y, ls, label));
     // The paper level's curve beside the judged level's (kinetic scenes), and what the DSMC of a
     // D_k/D_1 sweep measures (MSD increments), so the points are read against the right line.
