@@ -81,7 +81,8 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
   throw NumericalError("converged HCS: no cooling rate gives species " + std::to_string(k) + " its temperature (secant in zeta did not settle)");
 }
 
-// The Maxwellian rates' Jacobian of the residuals r_k = (ξ_k − ξ_0)/ν in x_j = ln T_j (k, j ≥ 1): the quasi-Newton start.
+// The Maxwellian rates' (v1 Eq. A2) Jacobian of the residuals r_k = (ξ_k − ξ_0)/ν in x_j = ln T_j (k, j ≥ 1): the
+// quasi-Newton start.
 Eigen::MatrixXd maxwellian_jacobian(const CollisionRates& rates, const std::vector<double>& T, double nu) {
   const std::size_t N = T.size(), n = N - 1;
   std::vector<double> xi(N), xp(N), Tp = T;
@@ -145,7 +146,7 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
   const model::Mixture& mix = rates.mixture();
   const std::size_t N = mix.size();
   // The order-3 Sonine HCS is the start and gives β_k (the mixture's alone).
-  SonineHcs start = sonine_hcs(mix, rates.law(), rates.contact_values(), false, SonineSolver::automatic, 3);
+  const SonineHcs start = sonine_hcs(mix, rates.law(), rates.contact_values(), false, SonineSolver::automatic, 3);
   State s;
   s.T = start.T;
   for (std::size_t k = 0; k < N; ++k) s.shapes.push_back({1.0, 0.5 * start.c[k], start.a3[k]});

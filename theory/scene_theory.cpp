@@ -297,8 +297,8 @@ model::Scene in_natural_units(const model::Scene& scene, double unit) {
 }  // namespace
 
 bool theory_uses_rtol(const model::Scene& s) {
-  if (s.observables.distribution_settled && !s.theory.sweep) return false;
-  return !s.theory.sweep || s.observables.d_ratio;  // a D-ratio sweep may follow increment histories in time
+  if (s.theory.sweep) return s.observables.d_ratio;  // a D-ratio sweep may follow increment histories in time
+  return !s.observables.distribution_settled;
 }
 
 TheoryResult run_level(const model::Scene& scene, const std::string& level) {

@@ -88,7 +88,7 @@ TEST_CASE("converged HCS: MG gamma within 0.3% of DSMC at all 18 points of Figs.
 TEST_CASE("converged HCS: the model error parts of the MG scenes' tolerances", "[.tolerances]") {
   // Not run by ctest (hidden tag): `granmix_tests_theory "[.tolerances]"` prints, at every DSMC point of the scenes
   // judged at the level kinetic-hcs-converged, the two computed parts of γ's and c's model error (converged_hcs.hpp):
-  // the grid's (knots 3/2 apart, the 16-point rule) and the partners' truncation (the a₃ term's size). A scene's
+  // the grid's (twice the change with knots 3/2 apart or the 16-point rule) and the partners' truncation (the a₃ term's size). A scene's
   // `relative` is the largest sum over its points (compare/scenes/mg-fig0[245]*.toml). ~2 min.
   struct Scene {
     const char* name;
