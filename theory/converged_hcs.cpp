@@ -14,13 +14,11 @@ namespace granmix::theory {
 
 namespace {
 
-constexpr double domain_widths = 7.0;   // U in units of √(T_k/m_k), as the tracer limit's intruder
-constexpr double steps_per_width = 8;   // knots per √(T_k/m_k)
-// The collision rule's points, and the finer one of the check. Measured on MG's 18 points of Figs. 4–5: 8 → 12 points
+// The check's finer collision rule (the solve uses speed_grid_rule_points = 12). Measured on MG's 18 points of Figs. 4–5: 8 → 12 points
 // moves γ by up to 2.3e-4, 12 → 16 by ≤ 3e-5; knots 3/2 as far apart ≤ 1e-6.
-constexpr std::size_t rule_points = 12, fine_rule_points = 16;
-constexpr int max_passes = 60;  // v1 Fig. 4 at n2 = 0.01 (T2/T1 = 169, the light species' a2 = 0.50, a3 = −0.61) takes 34
-// Settled: the passes shrink both by ~10× each (7–12 passes from the order-3 start); γ then moves by < 1e-7.
+constexpr std::size_t fine_rule_points = 16;
+constexpr int max_passes = 60;  // v1 Fig. 4 at n2 = 0.01 (T2/T1 = 169, the light species' a2 = 0.50, a3 = −0.61) takes 10
+// Settled: 5–7 passes from the order-3 start for MG's binaries (settle's quasi-Newton); γ then moves by < 1e-7.
 constexpr double settled_rates = 1e-8;   // |ζ_k − ζ_0| / τ_v,0⁻¹
 constexpr double settled_shapes = 1e-7;  // the largest change of any a₂, a₃ in a pass
 
@@ -35,6 +33,7 @@ struct State {
   std::vector<PartnerShape> shapes;
   double zeta0 = 0.0;  // species 0's ζ at these T (code units)
   int passes = 0;
+  Eigen::MatrixXd jacobian;  // settle's quasi-Newton matrix (empty: start from the Maxwellian one)
 };
 
 // Species k's stationary density at the cooling rate ζ for which its temperature is the T_k its partners were given.
@@ -45,8 +44,8 @@ struct SpeciesSolution {
 SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const State& s, const Settings& set, double zeta_guess, double nu) {
   const model::Mixture& mix = rates.mixture();
   const double width = std::sqrt(s.T[k] / mix[k].mass);
-  const double U = domain_widths * width;
-  const auto K = std::size_t(std::ceil(domain_widths * steps_per_width / set.step_scale));
+  const double U = speed_grid_widths * width;  // the tracer limit's intruder grid (tracer_speed_grid.hpp)
+  const auto K = std::size_t(std::ceil(speed_grid_widths * speed_grid_knots / set.step_scale));
   SpeedGrid grid;
   Eigen::MatrixXd collisions;
   SpeedGridProblem self{};
@@ -97,31 +96,42 @@ Eigen::MatrixXd maxwellian_jacobian(const CollisionRates& rates, const std::vect
   return J;
 }
 
+// One quasi-Newton iteration for the whole state x = (ln T_k for k ≥ 1; a₂,k; a₃,k), residuals r = ((ζ_k − ζ_0)/ν for
+// k ≥ 1; the solved a₂,k, a₃,k minus the partners' ones). Start: the Maxwellian block for the temperatures and −1 on the
+// shapes (its first step is the plain pass: partners take the shapes just solved), Broyden's update after every pass —
+// it learns how shapes and temperatures move each other, so the passes converge faster than linearly (MG Fig. 4, μ = 2:
+// 9–12 passes with the shapes by plain substitution, 5–7 so; v1 Fig. 4 at n₂ = 0.01: 34 and 10).
 State settle(const CollisionRates& rates, State s, const Settings& set) {
   const std::size_t N = s.T.size(), n = N - 1;
+  const auto dim = Eigen::Index(n + 2 * N);
   std::vector<double> zeta(N), inv_tau(N);
   rates.xi_and_inv_tau_v_all(s.T.data(), zeta.data(), inv_tau.data());  // the first pass's guesses
   const double nu = inv_tau[0];
-  Eigen::MatrixXd J = maxwellian_jacobian(rates, s.T, nu);
+  if (s.jacobian.size() == 0) {
+    s.jacobian = -Eigen::MatrixXd::Identity(dim, dim);
+    if (n > 0) s.jacobian.topLeftCorner(Eigen::Index(n), Eigen::Index(n)) = maxwellian_jacobian(rates, s.T, nu);
+  }
+  Eigen::MatrixXd& J = s.jacobian;
   Eigen::VectorXd dx_prev, r_prev;
   for (int pass = 1; pass <= max_passes; ++pass) {
-    std::vector<PartnerShape> shapes = s.shapes;
+    Eigen::VectorXd r(dim);
     for (std::size_t k = 0; k < N; ++k) {
       const SpeciesSolution sol = solve_species(rates, k, s, set, zeta[k], nu);
-      zeta[k] = sol.zeta, shapes[k] = {1.0, sol.a2, sol.a3};
+      zeta[k] = sol.zeta;
+      r[Eigen::Index(n + k)] = sol.a2 - s.shapes[k].a2, r[Eigen::Index(n + N + k)] = sol.a3 - s.shapes[k].a3;
     }
-    double moved = 0.0;
-    for (std::size_t k = 0; k < N; ++k)
-      moved = std::max({moved, std::abs(shapes[k].a2 - s.shapes[k].a2), std::abs(shapes[k].a3 - s.shapes[k].a3)});
-    s.shapes = shapes, s.zeta0 = zeta[0], s.passes = pass;
-    Eigen::VectorXd r(static_cast<Eigen::Index>(n));
     for (std::size_t k = 1; k < N; ++k) r[Eigen::Index(k - 1)] = (zeta[k] - zeta[0]) / nu;
-    if ((n == 0 || r.cwiseAbs().maxCoeff() < settled_rates) && moved < settled_shapes) return s;
-    if (n == 0) continue;
+    s.zeta0 = zeta[0], s.passes = pass;
+    const double moved = r.tail(Eigen::Index(2 * N)).cwiseAbs().maxCoeff();
+    if ((n == 0 || r.head(Eigen::Index(n)).cwiseAbs().maxCoeff() < settled_rates) && moved < settled_shapes) {
+      for (std::size_t k = 0; k < N; ++k) s.shapes[k].a2 += r[Eigen::Index(n + k)], s.shapes[k].a3 += r[Eigen::Index(n + N + k)];
+      return s;
+    }
     if (dx_prev.size() != 0) J += ((r - r_prev) - J * dx_prev) * dx_prev.transpose() / dx_prev.squaredNorm();  // Broyden
     const Eigen::VectorXd dx = -J.fullPivLu().solve(r);
-    if (!dx.allFinite()) throw NumericalError("converged HCS: the temperature step is not finite");
+    if (!dx.allFinite()) throw NumericalError("converged HCS: the quasi-Newton step is not finite");
     for (std::size_t k = 1; k < N; ++k) s.T[k] *= std::exp(dx[Eigen::Index(k - 1)]);
+    for (std::size_t k = 0; k < N; ++k) s.shapes[k].a2 += dx[Eigen::Index(n + k)], s.shapes[k].a3 += dx[Eigen::Index(n + N + k)];
     dx_prev = dx, r_prev = r;
   }
   throw NumericalError("converged HCS: the temperatures and shapes did not settle in " + std::to_string(max_passes) + " passes");
@@ -150,7 +160,7 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
   State s;
   s.T = start.T;
   for (std::size_t k = 0; k < N; ++k) s.shapes.push_back({1.0, 0.5 * start.c[k], start.a3[k]});
-  static const CollisionRule rule(rule_points), finer(fine_rule_points);
+  static const CollisionRule rule(speed_grid_rule_points), finer(fine_rule_points);
   const State best = settle(rates, s, {1.0, &rule, true});
 
   ConvergedHcs out;

@@ -7,9 +7,10 @@
 // included — a Maxwellian at T_j times 1 + a₂,j S₂ + a₃,j S₃, a₂,j and a₃,j the cumulants of j's own solved density.
 // Self-consistency, per pass: each species' ζ_k is the cooling rate at which its solved temperature is the T_k its
 // partners were given (a secant in ζ on the assembled operator: the collisions do not depend on ζ); the HCS asks
-// ζ_k = ζ_0, so ln(T_k/T_0) take a quasi-Newton step (the Maxwellian rates' Jacobian, Broyden-updated) and the shapes
-// are those just solved. The start is the order-3 Sonine HCS (sonine_hcs.hpp), so the passes are few (7–12 for MG's
-// binaries, ~0.1 s each on 2 cores; 34 for v1 Fig. 4 at n₂ = 0.01, where the light species' a₃ = −0.61).
+// ζ_k = ζ_0 and the partners' a₂, a₃ equal to the solved ones: one quasi-Newton step per pass in ln(T_k/T_0) and the
+// shapes (the Maxwellian rates' Jacobian and −1 on the shapes to start, Broyden-updated). The start is the order-3
+// Sonine HCS (sonine_hcs.hpp), so the passes are few (5–7 for MG's binaries, ~0.04 s each on 2 cores; 10 for v1 Fig. 4
+// at n₂ = 0.01, where the light species' a₃ = −0.61).
 // What is still truncated: the partners' shapes beyond a₃ (a species sees its partners through a₂, a₃ only; its own
 // density is the grid's). `partner_a3_effect` measures that part: the same state with partners of a₂ alone.
 // Constant restitution only (a viscoelastic mixture has no settled state).

@@ -17,9 +17,7 @@ namespace granmix::theory {
 
 namespace {
 
-constexpr double domain_widths = 8.0;  // U in units of √(θ₀/m₂): θ may move by tens of percent from θ₀
-constexpr double steps_per_width = 8;  // knots per √(θ₀/m₂), as the stationary solver's
-constexpr std::size_t gas_points = 12;  // the stationary solver's collision quadrature
+constexpr double relaxation_widths = 8.0;  // U in units of √(θ₀/m₂), one more than the stationary solver's: θ may move by tens of percent from θ₀
 constexpr double first_step = 1e-3, step_growth = 0.05;
 // Settled (see relax_intruder's loop): the drift a step still shows, times the scaled time left, below this; then the
 // settled steps grow by settled_growth up to settled_step/ζ.
@@ -72,9 +70,9 @@ TracerRelaxation relax_intruder(const CollisionRates& rates, double theta0, doub
   const model::Mixture& mix = rates.mixture();
   const KineticTracerGas gas = kinetic_tracer_gas(rates);
   const SpeedGridProblem p = speed_grid_problem(rates, {1.0, 0.0, 0.0}), p2 = speed_grid_problem(rates, {0.0, 1.0, 0.0});
-  static const CollisionRule rule(gas_points);
-  const double width = std::sqrt(theta0 / p.m2), U = domain_widths * width;
-  const auto K = std::size_t(domain_widths * steps_per_width);
+  static const CollisionRule rule(speed_grid_rule_points);
+  const double width = std::sqrt(theta0 / p.m2), U = relaxation_widths * width;
+  const auto K = std::size_t(relaxation_widths * speed_grid_knots);
   const SpeedGrid base = assemble_speed_grid(p, U, K, rule), s2 = assemble_speed_grid(p2, U, K, rule);
   // The gas's cumulant in time: from DSMC's Maxwellian start to its HCS (c₀ = 2a₂), or settled from the start.
   const double c0 = 2.0 * gas.shape.a2, slope = gas_cumulant_slope(rates, c0), xi11 = rates.xi(0, 0, 1.0, 1.0);

@@ -31,6 +31,15 @@ double spline_slope(double x) {
   x -= 1.0;
   return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
 }
+// The four splines nonzero at x = j₀ + t (0 ≤ t < 1): N(x − j₀ + 3 − c) for c = 0 … 3, i.e. the value spline(x − j + 3)
+// of j = j₀ + c — spline's four pieces at once.
+void splines_at(double t, double out[4]) {
+  const double r = 1.0 - t, t2 = t * t, t3 = t2 * t;
+  out[0] = r * r * r / 6.0;
+  out[1] = (4.0 - 6.0 * t2 + 3.0 * t3) / 6.0;
+  out[2] = (1.0 + 3.0 * t + 3.0 * t2 - 3.0 * t3) / 6.0;
+  out[3] = t3 / 6.0;
+}
 
 GaussRule legendre(std::size_t n, double a, double b) {
   gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
@@ -63,7 +72,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
               Eigen::Ref<Eigen::MatrixXd> coll1, Eigen::Ref<Eigen::MatrixXd> drift, Eigen::Ref<Eigen::MatrixXd> gram,
               Eigen::Ref<Eigen::MatrixXd> gram_u, IntervalMoments& out) {
   const GaussRule &uq = speed_rule(), &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
-  const std::size_t azimuths = rule.cos_phi.size(), nb = std::size_t(coll.rows());
+  const std::size_t nb = std::size_t(coll.rows());
   std::vector<double> C(nb), C1(nb);
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
@@ -79,27 +88,26 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
         const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
         if (g == 0.0) continue;
         const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
-        const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(azimuths);
+        const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(rule.azimuths);
         for (std::size_t c = 0; c < cs.x.size(); ++c) {
           const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
           // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
           const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
           double lost = 0.0;
-          for (std::size_t f = 0; f < azimuths; ++f) {
-            const double cp = rule.cos_phi[f], sp = rule.sin_phi[f];
+          for (std::size_t f = 0; f < rule.cos_phi.size(); ++f) {
+            const double cp = rule.cos_phi[f], wf = w * rule.phi_weight[f];
             const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
-            G += w * 0.5 * p.m1 * dw2, G4 += w * (2.0 * ww + dw2) * dw2;
+            G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2;
             const double dz = -kick * (st * cp * e1[1] + ct * e3[1]);
-            H += w * u * dz;
-            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy = -kick * st * sp, vz = u + dz;
-            const double speed = std::sqrt(vx * vx + vy * vy + vz * vz), s = speed / h;
+            H += wf * u * dz;
+            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy2 = kick * kick * st * st * rule.sin2_phi[f], vz = u + dz;
+            const double speed = std::sqrt(vx * vx + vy2 + vz * vz), s = speed / h;
             const double turn = speed > 0.0 ? vz / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
             const auto j0 = std::size_t(s);
-            for (std::size_t j = j0; j <= j0 + 3 && j < nb; ++j) {
-              const double N = w * spline(s - double(j) + 3.0);
-              C[j] += N, C1[j] += turn * N;
-            }
-            lost += w;
+            double N[4];
+            splines_at(s - double(j0), N);
+            for (std::size_t c = 0; c < 4 && j0 + c < nb; ++c) C[j0 + c] += wf * N[c], C1[j0 + c] += turn * wf * N[c];
+            lost += wf;
           }
           for (std::size_t j = i; j <= i + 3; ++j) {
             const double N = lost * spline(u / h - double(j) + 3.0);
@@ -123,10 +131,12 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
 
 }  // namespace
 
-CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)) {
-  for (std::size_t f = 0; f < 3 * n / 4; ++f) {
-    const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(3 * n / 4);
-    cos_phi.push_back(std::cos(phi)), sin_phi.push_back(std::sin(phi));
+CollisionRule::CollisionRule(std::size_t n)
+    : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)), azimuths(3 * n / 4) {
+  for (std::size_t f = 0; 2 * f < azimuths; ++f) {  // φ_f and φ_(M−1−f) = 2π − φ_f: one point, weight 2
+    const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(azimuths);
+    cos_phi.push_back(std::cos(phi)), sin2_phi.push_back(std::sin(phi) * std::sin(phi));
+    phi_weight.push_back(2 * f + 1 == azimuths ? 1.0 : 2.0);  // M odd: φ = π is its own partner
   }
 }
 

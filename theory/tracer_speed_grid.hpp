@@ -22,11 +22,21 @@
 
 namespace granmix::theory {
 
+// The stationary solvers' grid (tracer_temperature, converged_hcs; the relaxation's knots too): [0, U] with
+// U = speed_grid_widths √(T/m) of the species solved for, speed_grid_knots knot intervals per √(T/m), a collision rule
+// of speed_grid_rule_points (tracer_temperature.hpp has how they were chosen).
+inline constexpr double speed_grid_widths = 7.0;
+inline constexpr double speed_grid_knots = 8.0;
+inline constexpr std::size_t speed_grid_rule_points = 12;
+
 // The collision quadrature of n points in w_z (Gauss–Hermite) and |w_⊥|² (Gauss–Laguerre), n/2 in cos θ of σ̂ about ĝ
-// (Gauss–Legendre), 3n/4 azimuths.
+// (Gauss–Legendre), M = 3n/4 azimuths φ_f = 2π(f + ½)/M about ĝ.
 struct CollisionRule {
   GaussRule wz, wp, cs;
-  std::vector<double> cos_phi, sin_phi;  // the azimuths' midpoints
+  std::size_t azimuths;
+  // The azimuths folded: φ and 2π − φ give the same collision but for the sign of v′_y, which enters the speeds and the
+  // gas's gains only squared — one point of weight 2 per pair (φ = π, for M odd, weight 1).
+  std::vector<double> cos_phi, sin2_phi, phi_weight;
   explicit CollisionRule(std::size_t n);
 };
 

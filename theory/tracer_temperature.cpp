@@ -17,10 +17,7 @@ namespace granmix::theory {
 
 namespace {
 
-constexpr double domain_widths = 7.0;   // U in units of √(θ/m₂)
-constexpr double steps_per_width = 8;   // knots per √(θ/m₂)
-constexpr std::size_t gas_points = 12;  // the collision quadrature's size (see the header), and its coarse check's
-constexpr std::size_t coarse_gas_points = 6;
+constexpr std::size_t coarse_gas_points = 6;  // the collision rule of the coarse check
 constexpr double max_heating_share = 0.1;  // converged_intruder_temperature's range: |ξ₁₂| ≤ this × ζ₁
 
 // The stationary speed density on K knot intervals of [0, U] (NaN θ where the weak form is singular).
@@ -34,11 +31,11 @@ SpeedMoments solve(const SpeedGridProblem& p, double zeta, double U, std::size_t
 // The grid placed for θ (its domain and knots scale with √(θ/m₂)), step_scale times the knots' spacing.
 SpeedMoments solve_at(const SpeedGridProblem& p, double zeta, double theta, double step_scale, const CollisionRule& rule) {
   const double width = std::sqrt(theta / p.m2);
-  return solve(p, zeta, domain_widths * width, std::size_t(std::ceil(domain_widths * steps_per_width / step_scale)), rule);
+  return solve(p, zeta, speed_grid_widths * width, std::size_t(std::ceil(speed_grid_widths * speed_grid_knots / step_scale)), rule);
 }
 
 const CollisionRule& fine_rule() {
-  static const CollisionRule r(gas_points);
+  static const CollisionRule r(speed_grid_rule_points);
   return r;
 }
 

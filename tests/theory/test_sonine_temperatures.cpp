@@ -25,7 +25,7 @@ using namespace granmix::theory;
 
 namespace {
 
-const double pi = std::numbers::pi;
+using std::numbers::pi;
 
 struct SonineRun {
   std::shared_ptr<SonineCooling> model;
