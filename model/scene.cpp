@@ -190,7 +190,7 @@ Observables read_observables(TomlFields& f) {
 
 TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   TheorySettings s;
-  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3"},
+  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3", "kinetic-converged-hcs"},
                      "paper");
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
@@ -227,6 +227,9 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
+  if (s.theory.level == "kinetic-converged-hcs" && !s.theory.sweep)
+    top.fail("theory", "level \"kinetic-converged-hcs\" is the settled state of a sweep (the converged HCS has no history in time)",
+             "theory.sweep with level = \"kinetic-converged-hcs\", or level = \"kinetic-converged\"");
   if (s.theory.level.starts_with("kinetic-converged") && s.theory.sweep && s.restitution.is_viscoelastic())
     top.fail("theory", "level \"" + s.theory.level + "\" settles its memory for a sweep, which needs a constant restitution coefficient",
              "collisions.restitution = number");

@@ -27,13 +27,23 @@ struct Change {
   double T = 0.0, a2 = 0.0;
 };
 
-struct ConvergedHcs {
-  SonineHcs hcs;  // T_k (Σ x_k T_k = 1), c_k = 2a₂,k, a₃,k, λ_k, β_k, ζ* in MG's units (sonine_hcs.hpp)
+// A settled state: T_k (Σ x_k T_k = 1), c_k = 2a₂,k, a₃,k, λ_k, β_k, ζ* in MG's units (sonine_hcs.hpp), and the
+// cooling rate in code units at those T (∝ √T: at T_k λ it is zeta √λ).
+struct SettledHcs {
+  SonineHcs hcs;
+  double zeta = 0.0;
+};
+
+struct ConvergedHcs : SettledHcs {
   int passes = 0;
   // Error estimates, filled only by converged_hcs(…, true): the grid (twice the larger change with knots 3/2 as far
   // apart and with the 16-point collision rule), and the partners seen through a₂ alone (the size of the last partner term
   // kept, a₃: the estimate of the a₄ … terms left out, smaller still where the series settles).
   Change grid_change, partner_a3_effect;
+  // The states behind them, to carry the estimates into what is computed from the HCS (a D ratio:
+  // test_converged_hcs.cpp's "[.tolerances]"): knots 3/2 apart and the 16-point rule; partners through a₂ alone.
+  std::vector<SettledHcs> grid_variants;
+  SettledHcs partners_a2;
 };
 
 // rates: constant restitution, χ as given. check: also compute the two error estimates (three more solves).

@@ -297,7 +297,13 @@ model::Scene in_natural_units(const model::Scene& scene, double unit) {
 }  // namespace
 
 bool theory_uses_rtol(const model::Scene& s) {
-  if (s.theory.sweep) return s.observables.d_ratio;  // a D-ratio sweep may follow increment histories in time
+  if (s.theory.sweep) {
+    // A D-ratio sweep's increments are histories in time (a sweep point is the scene without its sweep), unless its
+    // level gives them in closed form from the settled memory (kinetic-converged-hcs).
+    model::Scene point = s;
+    point.theory.sweep.reset();
+    return s.observables.d_ratio && make_theory_level(s.theory.level)->msd_method(point) != MsdMethod::closed;
+  }
   return !s.observables.distribution_settled;
 }
 

@@ -198,11 +198,18 @@ class ConvergedLevel final : public TheoryLevel {
   static constexpr std::size_t converged_species_limit = 100;
   // reshaped: the tracer form with the gas's reshaping by the intruders (RelaxationOptions::gas_shape), the companion
   // that measures that left-out effect; otherwise the same level.
-  explicit ConvergedLevel(int cooling_order, bool reshaped = false)
-      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped),
-        name_(std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
+  // hcs_converged: "kinetic-converged-hcs", the tracer problem at the converged HCS (converged_hcs.hpp: its T_k, a₂,k,
+  // a₃,k and ζ) instead of the Sonine one; sweeps only (model/scene.cpp). Why: under v1 Fig. 5's D ratios the Sonine HCS
+  // is the gap — at the converged HCS they move by −1.3 … −2.8%, to within 0.4% of DSMC (test "converged HCS under v1's
+  // D ratios").
+  explicit ConvergedLevel(int cooling_order, bool reshaped = false, bool hcs_converged = false)
+      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped), hcs_converged_(hcs_converged),
+        name_(hcs_converged ? "kinetic-converged-hcs"
+                            : std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
   const char* name() const override { return name_.c_str(); }
-  MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep ? MsdMethod::closed : MsdMethod::vacf; }
+  // kinetic-converged-hcs: its sweep points' increments too in closed form, from the settled memory at the converged HCS
+  // (a settled start is self-similar; the VACF history follows the Sonine temperatures and shapes in time).
+  MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep || hcs_converged_ ? MsdMethod::closed : MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     base_.configure(opt, rates);
     if (!opt.vacf) return;
@@ -222,14 +229,17 @@ class ConvergedLevel final : public TheoryLevel {
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;
-    const std::size_t N = rates.size();
-    for (std::size_t k = 0; k < N; ++k) {
-      key.insert(key.end(), {rates.mixture()[k].mass, rates.mixture()[k].diameter, rates.mixture()[k].density});
-      for (std::size_t i = 0; i < N; ++i) key.insert(key.end(), {rates.law().eps(k, i), rates.chi(k, i)});
-    }
+    const std::vector<double> mixture_key = rates_key(rates);
+    key.insert(key.end(), mixture_key.begin(), mixture_key.end());
     if (key == memo_key_) return memo_;
+    const std::size_t N = rates.size();
     std::vector<double> a2(N, 0.0), a3(N, 0.0), xi(N);
-    if (sonine_applies(rates) && third_sonine_applies(rates, cooling_order_)) {
+    if (hcs_converged_) {
+      // The converged HCS at T's scale: every ζ_k the one ζ, ∝ √T (hard spheres, constant ε).
+      const ConvergedHcs& c = converged_state(rates);
+      const double zeta = c.zeta * std::sqrt(T[0] / c.hcs.T[0]);
+      for (std::size_t k = 0; k < N; ++k) a2[k] = 0.5 * c.hcs.c[k], a3[k] = c.hcs.a3[k], xi[k] = zeta;
+    } else if (sonine_applies(rates) && third_sonine_applies(rates, cooling_order_)) {
       const SonineMomentCooling m(rates, sonine_moment_max, {}, make_sonine_pair_terms(rates.law()));
       const std::vector<double> z = m.steady_state(T.data());
       std::vector<double> dz(z.size());
@@ -269,12 +279,19 @@ class ConvergedLevel final : public TheoryLevel {
     return d;
   }
   // A history starts where the kinetic level does (DSMC's start; the memory builds up from U = 0).
+  // kinetic-converged-hcs: a settled start has the converged HCS's ratios, at the kinetic level's T₁ (the same time scale).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
                                            TemperatureOptions& opt) const override {
-    return base_.initial_temperatures(init, rates, opt);
+    std::vector<double> T = base_.initial_temperatures(init, rates, opt);
+    if (!hcs_converged_ || init.kind != model::InitialState::Kind::hcs) return T;
+    const SonineHcs& h = converged_state(rates).hcs;
+    for (std::size_t k = T.size(); k-- > 0;) T[k] = h.T[k] * T[0] / h.T[0];
+    return T;
   }
-  std::vector<double> settled_temperatures(const CollisionRates& rates) const override { return base_.settled_temperatures(rates); }
-  SonineHcs hcs(const CollisionRates& rates) const override { return base_.hcs(rates); }
+  std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
+    return hcs_converged_ ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
+  }
+  SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ ? converged_state(rates).hcs : base_.hcs(rates); }
   // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
   // tracer_temperature.hpp) as its start, its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant
   // ε < 1, intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
@@ -329,12 +346,29 @@ class ConvergedLevel final : public TheoryLevel {
                        " Galerkin pair problems per settled state (~1 ms each); the limit is " + std::to_string(converged_species_limit) +
                        " species (allowed: level = \"kinetic\" for more)");
   }
+  // What a settled answer depends on besides T: the species and every pair's ε and χ.
+  static std::vector<double> rates_key(const CollisionRates& rates) {
+    std::vector<double> key;
+    const std::size_t N = rates.size();
+    for (std::size_t k = 0; k < N; ++k) {
+      key.insert(key.end(), {rates.mixture()[k].mass, rates.mixture()[k].diameter, rates.mixture()[k].density});
+      for (std::size_t i = 0; i < N; ++i) key.insert(key.end(), {rates.law().eps(k, i), rates.chi(k, i)});
+    }
+    return key;
+  }
+  // A sweep point asks for the settled state three times (its temperatures, its D, its increments' start): solved once.
+  const ConvergedHcs& converged_state(const CollisionRates& rates) const {
+    std::vector<double> key = rates_key(rates);
+    if (key != hcs_key_) hcs_memo_ = converged_hcs(rates), hcs_key_ = std::move(key);
+    return hcs_memo_;
+  }
   KineticLevel base_;
   int cooling_order_;
-  bool reshaped_;
+  bool reshaped_, hcs_converged_;
   std::string name_;
-  mutable std::vector<double> memo_key_;  // one level object serves one thread (scene_theory.cpp)
+  mutable std::vector<double> memo_key_, hcs_key_;  // one level object serves one thread (scene_theory.cpp)
   mutable SettledDiffusion memo_;
+  mutable ConvergedHcs hcs_memo_;
 };
 
 }  // namespace
@@ -363,11 +397,12 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(3);
   if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(2, true);
   if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(3, true);
+  if (name == "kinetic-converged-hcs") return std::make_unique<ConvergedLevel>(2, false, true);
   for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs)");
 }
 
 }  // namespace granmix::theory
