@@ -93,6 +93,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
           const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
           // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
           const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
+          const double kick_perp2 = kick * kick * st * st;  // |Δv_⊥|², split over the azimuth as cos² + sin²
           double lost = 0.0;
           for (std::size_t f = 0; f < rule.cos_phi.size(); ++f) {
             const double cp = rule.cos_phi[f], wf = w * rule.phi_weight[f];
@@ -100,7 +101,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
             G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2;
             const double dz = -kick * (st * cp * e1[1] + ct * e3[1]);
             H += wf * u * dz;
-            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy2 = kick * kick * st * st * rule.sin2_phi[f], vz = u + dz;
+            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy2 = kick_perp2 * rule.sin2_phi[f], vz = u + dz;
             const double speed = std::sqrt(vx * vx + vy2 + vz * vz), s = speed / h;
             const double turn = speed > 0.0 ? vz / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
             const auto j0 = std::size_t(s);
