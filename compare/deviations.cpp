@@ -36,9 +36,11 @@ std::string label(const model::CompareQuantity& q) {
 
 std::string tolerance_text(const model::CompareQuantity& q) {
   // Δp, Δm, Δs: the correction over the paper level, the Maxwellian value, the first-Sonine D; Δps: the larger.
+  // Δe: the level's own computed model error (error_column).
   std::string delta = "Δ";
   for (const std::string& lower : q.correction_from) delta += lower.front();
-  const std::string rel = q.correction_from.empty() ? fmt::format("{:g}", q.relative)
+  if (!q.error_column.empty()) delta += 'e';
+  const std::string rel = delta.size() == std::string("Δ").size() ? fmt::format("{:g}", q.relative)
                         : q.relative > 0 ? fmt::format("{:g}+{}", q.relative, delta) : delta;
   return rel + fmt::format("+{:g}σ", q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
 }
@@ -48,6 +50,7 @@ nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
   // One lower level as a string (as before), several as an array.
   if (q.correction_from.size() == 1) j["correction_from"] = q.correction_from.front();
   if (q.correction_from.size() > 1) j["correction_from"] = q.correction_from;
+  if (!q.error_column.empty()) j["error_column"] = q.error_column;
   if (q.absolute > 0) j["absolute"] = q.absolute;
   return j;
 }
@@ -66,6 +69,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
     const int paper = theory.column(predicted + "_paper");
     std::vector<int> lower;
     for (const std::string& from : q.correction_from) lower.push_back(theory.column(predicted + "_" + from));
+    const int computed = q.error_column.empty() ? -1 : theory.column(q.error_column);
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];
@@ -85,7 +89,10 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       double correction = 0.0;
       for (int l : lower)
         if (l >= 0 && std::isfinite(row[l]) && d.theory != 0.0) correction = std::max(correction, std::abs(d.theory - row[l]) / std::abs(d.theory));
-      d.model_error = q.relative + correction;
+      // The level's own computed model error: a judged point without it (a theory table that lacks the column, or
+      // NaN there) is judged as if it had none — stricter, never wider.
+      const double own = computed >= 0 && std::isfinite(row[computed]) ? row[computed] : 0.0;
+      d.model_error = q.relative + correction + own;
       d.pass = std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute;
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;
       out.push_back(d);

@@ -298,6 +298,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
     c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped"});
+    if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
@@ -412,6 +413,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
     const std::string& level = s.theory.level;
     const bool cooling3 = level == "kinetic-cooling3" || level == "kinetic-cooling3-shaped";
     const bool converged = level.starts_with("kinetic-converged");
+    for (const CompareQuantity& q : s.compare)
+      if (!q.error_column.empty() && (level != "kinetic-converged-hcs" || q.name != "D_ratio"))
+        t.fail("error_column", "\"D_ratio_error\" is the model error the level kinetic-converged-hcs computes for its D ratios, but the quantity is \"" +
+               q.name + "\" at theory.level \"" + level + "\"", "name = \"D_ratio\" with theory.level = \"kinetic-converged-hcs\", or no error_column");
     for (const CompareQuantity& q : s.compare)
       for (const std::string& lower : q.correction_from) {
         if (lower == "paper" && level == "paper")

@@ -84,6 +84,9 @@ struct CompareQuantity {
   // (a₃) of first-Sonine temperatures and HCS), added to `relative`. Several: the largest of them at each point
   // (the corrections of independent truncations). Empty: `relative` alone.
   std::vector<std::string> correction_from;
+  // A theory column holding the judged level's own computed model error at each point (relative), added too:
+  // "D_ratio_error" (kinetic-converged-hcs, theory/converged_hcs_diffusion.hpp). Empty: none.
+  std::string error_column;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)

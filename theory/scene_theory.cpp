@@ -66,6 +66,9 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   const bool increments = o.d_ratio && s.dsmc.present && s.times.size() >= 2;
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (increments) t.columns.push_back("D_ratio_increment");
+  // The level's own model error of D_k/D_1, where it computes one: at the DSMC points only (three more HCS solves each).
+  const bool errors = increments && level.computes_d_ratio_error();
+  if (errors) t.columns.push_back("D_ratio_error");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
   // gamma_ratio_maxwell: the same ratio from Maxwellian γ's, so that a scene can judge the first-Sonine
   // ratio with its last correction as model error (correction_from = "maxwell").
@@ -85,8 +88,11 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
+    std::vector<double> error(N, nan);
     if (o.d_ratio) {
       const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
+      // Asked first: the level keeps the checked state for the D and increments that follow.
+      if (errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end()) error = own->d_ratio_error(rates);
       d = own->diffusion_at(rates, own->settled_temperatures(rates));
     }
     const std::vector<double> inc = increments ? increment_ratios(p, *own) : std::vector<double>{};
@@ -97,6 +103,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
       std::vector<double> row = {x, double(k)};
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
       if (increments) row.push_back(k > 1 ? inc[k - 1] : nan);  // species 1: 1 by construction
+      if (errors) row.push_back(k > 1 ? error[k - 1] : nan);
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
       if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0), row.push_back(k ? nan : maxwell.gamma() / gamma0_maxwell);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);

@@ -143,9 +143,15 @@ SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha,
     p.rates = std::make_unique<CollisionRates>(mix, alpha, chi);
     p.moments = std::make_unique<SonineMomentCooling>(*p.rates, 3);
   }
+  // An elastic mixture settles at equal temperatures (detailed balance, for any masses and sizes): every ζ_k is 0
+  // there, so the relative ζ differences the root finders zero are 0/0 (v1 Fig. 7's ε = 1 with four species: hybrids
+  // did not converge).
+  bool elastic = true;
+  for (std::size_t k = 0; k < N; ++k)
+    for (std::size_t i = k; i < N; ++i) elastic = elastic && alpha.eps(k, i) == 1.0;
   SonineHcs out;
-  if (N == 1)
-    out.T = {1.0};
+  if (N == 1 || elastic)
+    out.T.assign(N, 1.0);
   else
     out.T = (N == 2 && solver == SonineSolver::automatic) ? solve_binary(p) : solve_many(p);
   const Evaluation e = evaluate(p, out.T);

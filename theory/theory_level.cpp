@@ -6,6 +6,7 @@
 #include <string>
 
 #include "converged_hcs.hpp"
+#include "converged_hcs_diffusion.hpp"
 #include "initial_state.hpp"
 #include "settled_ratios.hpp"
 #include "sonine2_diffusion.hpp"
@@ -296,6 +297,14 @@ class ConvergedLevel final : public TheoryLevel {
     return hcs_converged_ ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
   }
   SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ ? converged_state(rates).hcs : base_.hcs(rates); }
+  // kinetic-converged-hcs: the four computed parts of its D ratios' model error (converged_hcs_diffusion.hpp). Why its
+  // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 2.1% and the tracer problem's 1.5%, at n₂ = 0.1 and 0.3
+  // all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or miss the former.
+  bool computes_d_ratio_error() const override { return hcs_converged_; }
+  std::vector<double> d_ratio_error(const CollisionRates& rates) const override {
+    if (!hcs_converged_) return TheoryLevel::d_ratio_error(rates);
+    return converged_d_ratio_error(rates, converged_state(rates, true)).total();
+  }
   // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
   // tracer_temperature.hpp) as its start, its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant
   // ε < 1, intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
@@ -361,9 +370,11 @@ class ConvergedLevel final : public TheoryLevel {
     return key;
   }
   // A sweep point asks for the settled state three times (its temperatures, its D, its increments' start): solved once.
-  const ConvergedHcs& converged_state(const CollisionRates& rates) const {
+  // check: with its error estimates (three more solves; the state itself is the same), kept for the later asks.
+  const ConvergedHcs& converged_state(const CollisionRates& rates, bool check = false) const {
     std::vector<double> key = rates_key(rates);
-    if (key != hcs_key_) hcs_memo_ = converged_hcs(rates), hcs_key_ = std::move(key);
+    const bool checked = !hcs_memo_.grid_variants.empty();
+    if (key != hcs_key_ || (check && !checked)) hcs_memo_ = converged_hcs(rates, check), hcs_key_ = std::move(key);
     return hcs_memo_;
   }
   KineticLevel base_;
@@ -378,6 +389,10 @@ class ConvergedLevel final : public TheoryLevel {
 }  // namespace
 
 std::unique_ptr<TracerForm> TheoryLevel::tracer_form(const CollisionRates& rates, double) const { return closed_tracer_form(tracer(rates)); }
+
+std::vector<double> TheoryLevel::d_ratio_error(const CollisionRates&) const {
+  throw std::logic_error(std::string("level ") + name() + " computes no model error of its D ratios");
+}
 
 std::string companion_level(const std::string& level, const std::string& correction) {
   if (correction == "paper" || correction == "kinetic") return correction;

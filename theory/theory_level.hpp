@@ -56,6 +56,12 @@ class TheoryLevel {
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
   // The tracer limit in time to t_end (tracer_form.hpp): closed forms from tracer(rates) unless the level relaxes it.
   virtual std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const;
+  // Whether the level computes its own model error of its settled D_k/D_1, and that error (relative, per species;
+  // species 1: 0): kinetic-converged-hcs carries the converged HCS's error estimates through its tracer problem
+  // (converged_hcs_diffusion.hpp). A sweep's theory.tsv holds it at the DSMC points as `D_ratio_error`, which a scene
+  // judges with (error_column). The other levels compute none (they judge with companion levels, correction_from).
+  virtual bool computes_d_ratio_error() const { return false; }
+  virtual std::vector<double> d_ratio_error(const CollisionRates& rates) const;
 };
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to

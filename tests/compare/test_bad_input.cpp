@@ -92,6 +92,10 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
        "compare.correction_from: \"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"kinetic-cooling3\""},
       {"a truncation of the converged level under another", replace(judged("\"sonine4\""), "msd = \"eq17\"", "level = \"kinetic-converged\""),
        "compare.correction_from: \"sonine4\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"kinetic-converged\""},
+      {"unknown error column", replace(judged("\"paper\""), "correction_from = \"paper\"", "error_column = \"msd_error\""),
+       ":20: compare.quantities[1].error_column: unknown value \"msd_error\""},
+      {"an error column the level does not compute", replace(judged("\"paper\""), "correction_from = \"paper\"", "error_column = \"D_ratio_error\""),
+       "compare.error_column: \"D_ratio_error\" is the model error the level kinetic-converged-hcs computes for its D ratios, but the quantity is \"msd\" at theory.level \"paper\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");

@@ -140,8 +140,19 @@ struct BinaryByHand {
 
 TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent transcription of the rates", "[compare]") {
   const Tsv t = theory_of("bo1-fig05");
-  CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_paper", "D_ratio_increment_paper"});
+  CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_error", "D_ratio_paper", "D_ratio_increment_paper"});
   REQUIRE(t.rows.size() == 42);
+  // The level's own model error, at the three DSMC points only (tests/theory/test_converged_hcs.cpp checks its parts):
+  // 0.72% at ε = 0.2, a few 0.1% at 0.5 and 0.8.
+  for (std::size_t row = 1; row < t.rows.size(); row += 2) {
+    const double e = t.at(row, "eps"), error = t.at(row, "D_ratio_error");
+    INFO("eps = " << e);
+    const bool dsmc = std::abs(e - 0.2) < 1e-12 || std::abs(e - 0.5) < 1e-12 || std::abs(e - 0.8) < 1e-12;
+    CHECK(std::isfinite(error) == dsmc);
+    if (dsmc) CHECK(error > 1e-3);
+    if (dsmc) CHECK(error < 1e-2);
+  }
+  CHECK(t.at(9, "D_ratio_error") == Approx(7.21e-3).epsilon(0.01));
   // The judged kinetic-converged-hcs column (its D at the converged HCS: tests/theory/test_converged_hcs.cpp): from the
   // level's own settled start at constant ε its MSD increments give the settled ratio within 0.5%.
   for (const double e : {0.2, 0.5, 0.8}) {
@@ -276,6 +287,36 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
   CHECK(strict.output.find("NO") != std::string::npos);
   // No half-written folder is left beside the finished one.
   for (const auto& e : std::filesystem::directory_iterator(d / "strict")) CHECK(e.path().filename().string().rfind(".", 0) != 0);
+}
+
+TEST_CASE("granmix compare: a D-ratio scene judged with the level's own model error (error_column)", "[compare][dsmc]") {
+  // m = 1, 2 (v1 Fig. 7's first two species), one DSMC point: deviations.tsv's model error at it is theory.tsv's
+  // D_ratio_error (relative = 0, no lower level), report.json names the column, the summary prints Δe.
+  const auto d = test::fresh_dir("error-column");
+  test::write_file(d / "s.toml", "[scene]\nname = \"s\"\n[mixture]\nspecies = [{ mass = 1, diameter = 1, density = 0.1 }, "
+                                 "{ mass = 2, diameter = 1.2599210498948732, density = 0.1 }]\n[collisions]\nrestitution = 0.5\n"
+                                 "[observables]\nd_ratio = true\n[theory]\nlevel = \"kinetic-converged-hcs\"\n"
+                                 "sweep = { parameter = \"eps\", from = 0.3, to = 0.7, points = 3 }\n[time]\ntimes = [20, 200]\n"
+                                 "[dsmc]\nat = [0.5]\nquick = { particles = 4000, replicas = 4 }\npaper = { particles = 4000, replicas = 4 }\n"
+                                 "[compare]\nquantities = [{ name = \"D_ratio\", theory = \"D_ratio_increment\", error_column = \"D_ratio_error\", "
+                                 "relative = 0, z = 4, why = \"w\" }]\n");
+  const auto r = test::run_granmix("compare " + (d / "s.toml").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  REQUIRE(r.code <= 1);
+  CHECK(r.output.find("Δe+4σ") != std::string::npos);
+  const Tsv th = read_tsv(d / "out" / "s" / "theory.tsv");
+  // deviations.tsv's quantity column is text: its one data line read by hand, the model error its last field.
+  const std::string dev = test::data_lines(d / "out" / "s" / "deviations.tsv");
+  REQUIRE(th.rows.size() == 6);  // species 1 and 2 of each point
+  REQUIRE(std::count(dev.begin(), dev.end(), '\n') == 2);  // the header and the one point
+  const std::string point = dev.substr(dev.find('\n') + 1);
+  REQUIRE(dev.substr(0, dev.find('\n')).ends_with("\tmodel_error"));
+  CHECK(!std::isfinite(th.at(1, "D_ratio_error")));  // ε = 0.3: no DSMC there
+  REQUIRE(th.at(3, "eps") == 0.5);
+  CHECK(th.at(3, "D_ratio_error") > 0.0);
+  CHECK(std::stod(point.substr(point.rfind('\t') + 1)) == Approx(th.at(3, "D_ratio_error")).epsilon(1e-14));
+  const auto rep = nlohmann::json::parse(std::ifstream(d / "out" / "s" / "report.json"));
+  CHECK(rep["quantities"]["D_ratio"]["tolerance"]["error_column"].get<std::string>() == "D_ratio_error");
 }
 
 TEST_CASE("granmix validate: every scene of a folder - summary.tsv and summary.json", "[compare][dsmc]") {

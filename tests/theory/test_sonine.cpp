@@ -38,6 +38,18 @@ TEST_CASE("one species: c = 32(1-a)(1-2a^2)/(81 - 17a + 30a^2(1-a)) from alpha =
   const SonineHcs elastic = mg(3, 2, 1.5, 1.0);
   CHECK(elastic.gamma() == Approx(1.0).epsilon(1e-12));  // α = 1: equipartition and a Maxwellian
   CHECK(elastic.c[0] == Approx(0.0).margin(1e-13));
+  // Four species (v1 Fig. 7's mixture at ε = 1), orders 2 and 3: every ζ_k is 0, so the root finder's relative ζ
+  // differences were 0/0 (hybrids threw); equal temperatures are the exact answer, and with them the cumulant
+  // equations must give a Maxwellian.
+  const model::Mixture four({{1, 1, 0.1}, {2, std::cbrt(2.0), 0.1}, {3, std::cbrt(3.0), 0.1}, {4, std::cbrt(4.0), 0.1}});
+  for (int order : {2, 3}) {
+    const SonineHcs s = sonine_hcs(four, model::Restitution::constant(4, 1.0), model::dilute_contact_values(4), false, SonineSolver::automatic, order);
+    for (std::size_t k = 0; k < 4; ++k) {
+      CHECK(s.T[k] == 1.0);
+      CHECK(s.c[k] == Approx(0.0).margin(1e-13));
+      if (order == 3) CHECK(s.a3[k] == Approx(0.0).margin(1e-13));
+    }
+  }
 }
 
 TEST_CASE("Maxwellian level (c = 0) equals the settled ratio of v1 (A2) for 20 random binaries", "[theory]") {
