@@ -40,7 +40,8 @@ std::string tolerance_text(const model::CompareQuantity& q) {
   std::string delta = "Δ";
   for (const std::string& lower : q.correction_from) delta += lower.front();
   if (!q.error_column.empty()) delta += 'e';
-  const std::string rel = delta.size() == std::string("Δ").size() ? fmt::format("{:g}", q.relative)
+  const bool computed = !q.correction_from.empty() || !q.error_column.empty();
+  const std::string rel = !computed ? fmt::format("{:g}", q.relative)
                         : q.relative > 0 ? fmt::format("{:g}+{}", q.relative, delta) : delta;
   return rel + fmt::format("+{:g}σ", q.z) + (q.absolute > 0 ? fmt::format(" or ±{:g}", q.absolute) : "");
 }

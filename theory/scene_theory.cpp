@@ -91,7 +91,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     std::vector<double> error(N, nan);
     if (o.d_ratio) {
       const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
-      // Asked first: the level keeps the checked state for the D and increments that follow.
+      // Asked first: the level keeps the checked state for the D and increments that follow. (The DSMC points are on
+      // the grid exactly: model/scene.cpp puts them there.)
       if (errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end()) error = own->d_ratio_error(rates);
       d = own->diffusion_at(rates, own->settled_temperatures(rates));
     }
