@@ -1,5 +1,7 @@
 #include "scene_theory.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -10,6 +12,7 @@
 #include "theory_level.hpp"
 #include "initial_state.hpp"
 #include "model/enskog.hpp"
+#include "model/errors.hpp"
 #include "msd.hpp"
 #include "parallel_each.hpp"
 #include "shell_average.hpp"
@@ -82,9 +85,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   // The points on OpenMP threads, each wholly on one with a level object of its own (a level keeps a memo: one per
   // thread), their rows then in sweep order: the numbers do not depend on the thread count. (v1 Fig. 7's 51 points
   // each solve the converged tracer problem and an increment history.)
-  std::vector<std::vector<std::vector<double>>> rows(sw.values.size());
-  parallel_each(sw.values.size(), [&](std::size_t j) {
-    const double x = sw.values[j];
+  auto point_rows = [&](double x) {
+    std::vector<std::vector<double>> out;
     const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
@@ -108,7 +110,16 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
       if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0), row.push_back(k ? nan : maxwell.gamma() / gamma0_maxwell);
       if (o.cumulant) row.push_back(k ? sonine.c[k - 1] : nan);
-      rows[j].push_back(std::move(row));
+      out.push_back(std::move(row));
+    }
+    return out;
+  };
+  std::vector<std::vector<std::vector<double>>> rows(sw.values.size());
+  parallel_each(sw.values.size(), [&](std::size_t j) {
+    try {
+      rows[j] = point_rows(sw.values[j]);
+    } catch (const NumericalError& e) {  // a solver failed at one point: say which (exit 3 names the solver and the point)
+      throw NumericalError(std::string(e.what()) + " (at the sweep point " + sw.column() + " = " + fmt::format("{:g}", sw.values[j]) + ")");
     }
   });
   for (auto& point : rows)

@@ -115,3 +115,18 @@ TEST_CASE("missing scene file and unknown options exit 2", "[compare]") {
   CHECK(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --bogus").code == 2);
   CHECK(test::run_granmix("frobnicate").code == 2);
 }
+
+TEST_CASE("a solver failure at one sweep point exits 3 naming the solver and the point - nothing written", "[compare]") {
+  // m₂/m₁ = 10⁴ is beyond the converged HCS's speed grid (its operator is singular there): a clear error, not a number.
+  const auto d = test::fresh_dir("sweep-failure");
+  test::write_file(d / "s.toml", "[scene]\nname = \"s\"\n[mixture]\nspecies = [{ mass = 1, diameter = 1, density = 0.1 }, "
+                                 "{ mass = 10000, diameter = 1, density = 0.001 }]\n[collisions]\nrestitution = 0.5\n"
+                                 "[observables]\nd_ratio = true\n[theory]\nlevel = \"kinetic-converged-hcs\"\n"
+                                 "sweep = { parameter = \"eps\", from = 0.3, to = 0.7, points = 2 }\n");
+  const auto r = test::run_granmix("theory " + (d / "s.toml").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code == 3);
+  CHECK(r.output.find("converged HCS") != std::string::npos);
+  CHECK(r.output.find("(at the sweep point eps = 0.3)") != std::string::npos);
+  CHECK(!std::filesystem::exists(d / "out" / "s" / "theory.tsv"));
+}
