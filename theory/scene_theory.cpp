@@ -83,8 +83,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   const double gamma0 = relative ? sonine_of(level, model::sweep_point(s, 0.0)).gamma() : nan;
   const double gamma0_maxwell = relative ? maxwell_of(model::sweep_point(s, 0.0)).gamma() : nan;
   // The points on OpenMP threads, each wholly on one with a level object of its own (a level keeps a memo: one per
-  // thread), their rows then in sweep order: the numbers do not depend on the thread count. (v1 Fig. 7's 51 points
-  // each solve the converged tracer problem and an increment history.)
+  // thread), their rows then in sweep order: the numbers do not depend on the thread count. (Each of v1 Fig. 7's 11
+  // points solves the four species' converged HCS and tracer problems.)
   auto point_rows = [&](double x) {
     std::vector<std::vector<double>> out;
     const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
