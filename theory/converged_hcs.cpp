@@ -52,7 +52,7 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
   for (std::size_t j = 0; j < mix.size(); ++j) {
     const PartnerShape partner = set.partner_a3 ? s.shapes[j] : PartnerShape{1.0, s.shapes[j].a2, 0.0};
     const SpeedGridProblem p = speed_grid_pair(rates, k, j, s.T[j], partner);
-    SpeedGrid g = assemble_speed_grid(p, U, K, *set.rule);
+    SpeedGrid g = assemble_speed_grid(p, U, K, *set.rule, SpeedGridParts::density);
     if (j == 0) {
       collisions = g.collisions, grid = std::move(g), self = p;
     } else {

@@ -3,6 +3,9 @@
 #include <gsl/gsl_integration.h>
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
 #include <numbers>
 
 #include "model/errors.hpp"
@@ -13,7 +16,9 @@ namespace granmix::theory {
 
 namespace {
 
-constexpr std::size_t speed_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t speed_points = 4;
+constexpr std::size_t max_azimuth_pairs = 64;  // CollisionRule(n) has (3n/4 + 1)/2: n ≤ 168  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
 
 // The cardinal cubic B-spline on [0, 4] and its derivative.
 double spline(double x) {
@@ -68,59 +73,73 @@ struct IntervalMoments {
 };
 
 // Knot interval i: the collision, drift and Gram columns of its four trial functions (rows every test function).
+// full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's alone.
+// Why the inner loop is as it is (it is ~90% of a converged-HCS sweep's cost): |Δv| = kick for every σ̂, so
+// |v′|² = u² + 2u Δv_z + kick², with Δv_z affine in cos φ — one multiply-add and a square root per azimuth; and the loss
+// term N_m(u) Σ w is the same spline values for every gas velocity and σ̂, so it is subtracted once per u.
+template <bool full>
 void interval(const SpeedGridProblem& p, double h, std::size_t i, const CollisionRule& rule, Eigen::Ref<Eigen::MatrixXd> coll,
               Eigen::Ref<Eigen::MatrixXd> coll1, Eigen::Ref<Eigen::MatrixXd> drift, Eigen::Ref<Eigen::MatrixXd> gram,
               Eigen::Ref<Eigen::MatrixXd> gram_u, IntervalMoments& out) {
   const GaussRule &uq = speed_rule(), &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
-  const std::size_t nb = std::size_t(coll.rows());
-  std::vector<double> C(nb), C1(nb);
+  const std::size_t nb = std::size_t(coll.rows()), nf = rule.cos_phi.size();
+  const double inv_h = 1.0 / h;
+  // Three entries past the last spline: a speed in the last knot interval scatters into them, and they are dropped.
+  std::vector<double> C(nb + 3), C1(full ? nb + 3 : 0);
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
     // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]; G(u), H(u) the same average of the gas's energy gain and of u·Δv.
     std::fill(C.begin(), C.end(), 0.0);
     std::fill(C1.begin(), C1.end(), 0.0);
-    double G = 0.0, H = 0.0, G4 = 0.0;
+    double G = 0.0, H = 0.0, G4 = 0.0, lost = 0.0;
     for (std::size_t a = 0; a < wz.x.size(); ++a)
       for (std::size_t b = 0; b < wp.x.size(); ++b) {
         const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
         const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
         const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
-        const double gx = -w_x, gz = u - w_z, g = std::hypot(gx, gz);
+        const double gx = -w_x, gz = u - w_z, g = std::sqrt(gx * gx + gz * gz);
         if (g == 0.0) continue;
         const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
         const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(rule.azimuths);
         for (std::size_t c = 0; c < cs.x.size(); ++c) {
           const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
-          // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
-          const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
-          const double kick_perp2 = kick * kick * st * st;  // |Δv_⊥|², split over the azimuth as cos² + sin²
-          double lost = 0.0;
-          for (std::size_t f = 0; f < rule.cos_phi.size(); ++f) {
+          // Δv_z = dz0 + dz1 cos φ; |v′|² = base + 2u dz1 cos φ.
+          const double dz0 = -kick * ct * e3[1], dz1 = -kick * st * e1[1], base = u * u + 2.0 * u * dz0 + kick * kick;
+          double speeds[max_azimuth_pairs];
+          for (std::size_t f = 0; f < nf; ++f) speeds[f] = std::sqrt(std::max(0.0, base + 2.0 * u * dz1 * rule.cos_phi[f]));  // vectorised
+          for (std::size_t f = 0; f < nf; ++f) {
             const double cp = rule.cos_phi[f], wf = w * rule.phi_weight[f];
-            const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
-            G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2;
-            const double dz = -kick * (st * cp * e1[1] + ct * e3[1]);
-            H += wf * u * dz;
-            const double vx = -kick * (st * cp * e1[0] + ct * e3[0]), vy2 = kick_perp2 * rule.sin2_phi[f], vz = u + dz;
-            const double speed = std::sqrt(vx * vx + vy2 + vz * vz), s = speed / h;
-            const double turn = speed > 0.0 ? vz / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
+            const double speed = speeds[f], s = speed * inv_h;
+            lost += wf;
             const auto j0 = std::size_t(s);
+            if (j0 >= nb) continue;  // beyond the grid: the density's mass leaves it (U = 7 widths: ~1e-19 of it)
             double N[4];
             splines_at(s - double(j0), N);
-            for (std::size_t c = 0; c < 4 && j0 + c < nb; ++c) C[j0 + c] += wf * N[c], C1[j0 + c] += turn * wf * N[c];
-            lost += wf;
-          }
-          for (std::size_t j = i; j <= i + 3; ++j) {
-            const double N = lost * spline(u / h - double(j) + 3.0);
-            C[j] -= N, C1[j] -= N;
+            for (std::size_t e = 0; e < 4; ++e) C[j0 + e] += wf * N[e];
+            if constexpr (full) {
+              // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
+              const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
+              const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
+              const double dz = dz0 + dz1 * cp;
+              G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2, H += wf * u * dz;
+              const double turn = speed > 0.0 ? (u + dz) / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
+              for (std::size_t e = 0; e < 4; ++e) C1[j0 + e] += turn * wf * N[e];
+            }
           }
         }
       }
+    for (std::size_t j = i; j <= i + 3; ++j) {  // the loss: every collision takes the density away from u
+      const double N = lost * spline(u / h - double(j) + 3.0);
+      C[j] -= N;
+      if constexpr (full) C1[j] -= N;
+    }
     for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
       const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
       for (int n = 0; n < 4; ++n) out.m[c][n] += Nj * std::pow(u, 2 * n);
       out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][6] += Nj * u, out.m[c][7] += Nj * G4;
-      for (std::size_t m = 0; m < nb; ++m) coll(Eigen::Index(m), Eigen::Index(c)) += Nj * C[m], coll1(Eigen::Index(m), Eigen::Index(c)) += Nj * C1[m];
+      for (std::size_t m = 0; m < nb; ++m) coll(Eigen::Index(m), Eigen::Index(c)) += Nj * C[m];
+      if constexpr (full)
+        for (std::size_t m = 0; m < nb; ++m) coll1(Eigen::Index(m), Eigen::Index(c)) += Nj * C1[m];
       for (std::size_t m = i; m <= i + 3; ++m) {  // test functions nonzero at u
         const double Nm = spline(u / h - double(m) + 3.0);
         drift(Eigen::Index(m), Eigen::Index(c)) += Nj * u * spline_slope(u / h - double(m) + 3.0) / h;
@@ -136,9 +155,11 @@ CollisionRule::CollisionRule(std::size_t n)
     : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), cs(legendre(n / 2, 0.0, 1.0)), azimuths(3 * n / 4) {
   for (std::size_t f = 0; 2 * f < azimuths; ++f) {  // φ_f and φ_(M−1−f) = 2π − φ_f: one point, weight 2
     const double phi = 2.0 * std::numbers::pi * (double(f) + 0.5) / double(azimuths);
-    cos_phi.push_back(std::cos(phi)), sin2_phi.push_back(std::sin(phi) * std::sin(phi));
+    cos_phi.push_back(std::cos(phi));
     phi_weight.push_back(2 * f + 1 == azimuths ? 1.0 : 2.0);  // M odd: φ = π is its own partner
   }
+  if (cos_phi.size() > max_azimuth_pairs)
+    throw std::invalid_argument("collision rule: " + std::to_string(n) + " points; the limit is " + std::to_string(4 * (2 * max_azimuth_pairs - 1) / 3));
 }
 
 SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
@@ -159,28 +180,36 @@ Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, cons
   return lu.solve(rhs);
 }
 
-SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule) {
+SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule, SpeedGridParts parts) {
   const double h = U / double(K);
+  const bool full = parts == SpeedGridParts::all;
   const std::size_t nb = K + 3;  // N_j(u) = spline(u/h − j + 3), j = 0 … K + 2
   const auto n = Eigen::Index(nb);
-  Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K)), coll1 = coll, drift = coll, gram = coll, gram_u = coll;
+  Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K)), drift = coll, gram = coll, gram_u = coll;
+  Eigen::MatrixXd coll1 = full ? coll : Eigen::MatrixXd::Zero(n, 0);
   std::vector<IntervalMoments> moments(K);
   parallel_each(K, [&](std::size_t i) {
     const auto cols = Eigen::Index(4 * i);
-    interval(p, h, i, rule, coll.middleCols(cols, 4), coll1.middleCols(cols, 4), drift.middleCols(cols, 4), gram.middleCols(cols, 4),
-             gram_u.middleCols(cols, 4), moments[i]);
+    auto c1 = full ? coll1.middleCols(cols, 4) : coll1.middleCols(0, 0);
+    if (full)
+      interval<true>(p, h, i, rule, coll.middleCols(cols, 4), c1, drift.middleCols(cols, 4), gram.middleCols(cols, 4), gram_u.middleCols(cols, 4), moments[i]);
+    else
+      interval<false>(p, h, i, rule, coll.middleCols(cols, 4), c1, drift.middleCols(cols, 4), gram.middleCols(cols, 4), gram_u.middleCols(cols, 4), moments[i]);
   });
   SpeedGrid g;
   g.h = h;
-  g.collisions = g.collisions_p1 = g.drift = g.gram = g.gram_u = Eigen::MatrixXd::Zero(n, n);
-  g.mass = g.u2 = g.u4 = g.u6 = g.gain = g.drag = g.u1 = g.gain4 = Eigen::VectorXd::Zero(n);
+  g.collisions = g.drift = g.gram = g.gram_u = Eigen::MatrixXd::Zero(n, n);
+  g.mass = g.u2 = g.u4 = g.u6 = g.u1 = Eigen::VectorXd::Zero(n);
+  if (full) g.collisions_p1 = g.collisions, g.gain = g.drag = g.gain4 = g.mass;
   Eigen::VectorXd* integrals[8] = {&g.mass, &g.u2, &g.u4, &g.u6, &g.gain, &g.drag, &g.u1, &g.gain4};
   for (std::size_t i = 0; i < K; ++i)
     for (std::size_t c = 0; c < 4; ++c) {
       const auto J = Eigen::Index(i + c), col = Eigen::Index(4 * i + c);
-      g.collisions.col(J) += coll.col(col), g.collisions_p1.col(J) += coll1.col(col), g.drift.col(J) += drift.col(col);
+      g.collisions.col(J) += coll.col(col), g.drift.col(J) += drift.col(col);
       g.gram.col(J) += gram.col(col), g.gram_u.col(J) += gram_u.col(col);
-      for (int m = 0; m < 8; ++m) (*integrals[m])[J] += moments[i].m[c][m];
+      if (full) g.collisions_p1.col(J) += coll1.col(col);
+      for (int m = 0; m < 8; ++m)
+        if (integrals[m]->size() != 0) (*integrals[m])[J] += moments[i].m[c][m];
     }
   return g;
 }
@@ -190,6 +219,8 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
   // Cumulants at the density's own temperature: c² = u² m₂/(2θ), ⟨c²⟩ = 3/2, a_p = ⟨S_p(c²)⟩/⟨S_p²⟩_M (physics.md §6;
   // S₂, S₃ of sonine_polynomials.hpp expanded in the moments, ⟨S₂²⟩_M = 15/8, ⟨S₃²⟩_M = 35/16).
   const double theta = p.m2 * u2 / 3.0, s = p.m2 / (2.0 * theta), x2 = u4 * s * s, x3 = u6 * s * s * s;
+  if (g.gain.size() == 0)  // SpeedGridParts::density: the gas's side and the drag were not assembled
+    return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0), nan, nan, nan};
   return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0),
           g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2), g.gain4.dot(P) / norm};
 }

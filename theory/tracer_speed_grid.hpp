@@ -36,7 +36,7 @@ struct CollisionRule {
   std::size_t azimuths;
   // The azimuths folded: φ and 2π − φ give the same collision but for the sign of v′_y, which enters the speeds and the
   // gas's gains only squared — one point of weight 2 per pair (φ = π, for M odd, weight 1).
-  std::vector<double> cos_phi, sin2_phi, phi_weight;
+  std::vector<double> cos_phi, phi_weight;
   explicit CollisionRule(std::size_t n);
 };
 
@@ -59,9 +59,15 @@ struct SpeedGrid {
   Eigen::MatrixXd collisions, collisions_p1, drift, gram, gram_u;
   Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1, gain4;  // u1_j = ∫N_j u du; gain4 as gain for the gas's Δ|w|⁴
 };
+// What to assemble: all of SpeedGrid, or the speed density's operator alone (collisions, drift, Gram matrices, mass,
+// u², u⁴, u⁶, u1 — what converged_hcs.hpp needs; collisions_p1, gain, drag and gain4 left empty and speed_moments'
+// gain, nu, gain4 NaN): the l = 1 harmonic and the gas's side are ~30% of the cost (9.8 against 14.1 ms on one core at
+// K = 56, the 12-point rule).
+enum class SpeedGridParts { all, density };
 // The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
 // thread count).
-SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule);
+SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule,
+                              SpeedGridParts parts = SpeedGridParts::all);
 
 // The stationary speed density of (collisions + (ζ/2) drift) P = 0 with ∫P = 1: the tests sum to ψ = 1 (partition of
 // unity), whose equation is 0 = 0, so the last one gives way to the normalisation. Empty where the system is singular.
