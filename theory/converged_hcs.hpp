@@ -36,17 +36,19 @@ struct SettledHcs {
 
 struct ConvergedHcs : SettledHcs {
   int passes = 0;
-  // Error estimates, filled only by converged_hcs(…, true): the grid (twice the larger change with knots 3/2 as far
-  // apart and with the 16-point collision rule), and the partners seen through a₂ alone (the size of the last partner term
-  // kept, a₃: the estimate of the a₄ … terms left out, smaller still where the series settles).
+  // Error estimates, filled only by converged_hcs(…, true): the grid (twice the largest change with knots 3/2 as far
+  // apart, with the 16-point collision rule, and with the domain 9/7 as wide), and the partners seen through a₂ alone
+  // (the size of the last partner term kept, a₃: the estimate of the a₄ … terms left out, smaller still where the
+  // series settles).
   Change grid_change, partner_a3_effect;
   // The states behind them, to carry the estimates into what is computed from the HCS (a D ratio:
-  // test_converged_hcs.cpp's "[.tolerances]"): knots 3/2 apart and the 16-point rule; partners through a₂ alone.
+  // test_converged_hcs.cpp's "[.tolerances]"): knots 3/2 apart, the 16-point rule, the wider domain; partners through
+  // a₂ alone.
   std::vector<SettledHcs> grid_variants;
   SettledHcs partners_a2;
 };
 
-// rates: constant restitution, χ as given. check: also compute the two error estimates (three more solves).
+// rates: constant restitution, χ as given. check: also compute the two error estimates (four more solves).
 // Throws std::invalid_argument for a viscoelastic law, NumericalError where the passes do not settle.
 ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
 

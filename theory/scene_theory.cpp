@@ -69,7 +69,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   const bool increments = o.d_ratio && s.dsmc.present && s.times.size() >= 2;
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (increments) t.columns.push_back("D_ratio_increment");
-  // The level's own model error of D_k/D_1, where it computes one: at the DSMC points only (three more HCS solves each).
+  // The level's own model error of D_k/D_1, where it computes one: at the DSMC points only (four more HCS solves each).
   const bool errors = increments && level.computes_d_ratio_error();
   if (errors) t.columns.push_back("D_ratio_error");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");

@@ -370,7 +370,7 @@ class ConvergedLevel final : public TheoryLevel {
     return key;
   }
   // A sweep point asks for the settled state three times (its temperatures, its D, its increments' start): solved once.
-  // check: with its error estimates (three more solves; the state itself is the same), kept for the later asks.
+  // check: with its error estimates (four more solves; the state itself is the same), kept for the later asks.
   const ConvergedHcs& converged_state(const CollisionRates& rates, bool check = false) const {
     std::vector<double> key = rates_key(rates);
     const bool checked = !hcs_memo_.grid_variants.empty();
