@@ -43,6 +43,27 @@ struct SpeciesSolution {
   double zeta, a2, a3;
 };
 
+// Why a species' grid operator can be singular, said in the mixture's terms: the partner that moves fastest against the
+// species' own thermal speed, and the share of the energy it carries. Met where a rare heavy species runs away (the
+// Santos–Dufty ordered phase: v1 Fig. 4's mixture at n₂ = 0.001, m₂/m₁ = 10⁴, ε = 0.3 — species 2 holds 99.8% of the
+// energy and moves 2.4× as fast as species 1, whose grid spans 7 of its thermal widths).
+std::string singular_grid(const CollisionRates& rates, const State& s, std::size_t k) {
+  const model::Mixture& mix = rates.mixture();
+  std::size_t fastest = k;
+  double energy = 0.0;
+  for (std::size_t j = 0; j < mix.size(); ++j) {
+    energy += mix[j].density * s.T[j];
+    if (s.T[j] / mix[j].mass > s.T[fastest] / mix[fastest].mass) fastest = j;
+  }
+  std::string why = "converged HCS: the speed grid's operator is singular for species " + std::to_string(k + 1);
+  if (fastest == k) return why;
+  return why + " (species " + std::to_string(fastest + 1) + " moves " +
+         std::to_string(std::sqrt((s.T[fastest] / mix[fastest].mass) / (s.T[k] / mix[k].mass))).substr(0, 4) + "x as fast and holds " +
+         std::to_string(100.0 * mix[fastest].density * s.T[fastest] / energy).substr(0, 4) + "% of the energy: a rare heavy species running away, "
+         "the Santos-Dufty ordered phase; its kicks leave species " + std::to_string(k + 1) + "'s grid of " +
+         std::to_string(int(speed_grid_widths)) + " thermal widths); level kinetic or kinetic-converged computes this mixture";
+}
+
 SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const State& s, const Settings& set, double zeta_guess, double nu) {
   const model::Mixture& mix = rates.mixture();
   const double width = std::sqrt(s.T[k] / mix[k].mass);
@@ -64,7 +85,7 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
   // θ_k(ζ) rises with ζ (the scaling's outward drift); secant on θ_k(ζ)/T_k − 1 from the guess.
   auto theta_at = [&](double zeta, SpeedMoments* m) {
     const Eigen::VectorXd P = stationary_speed_density(collisions, grid, zeta);
-    if (P.size() == 0) throw NumericalError("converged HCS: the speed grid's operator is singular (species " + std::to_string(k) + ")");
+    if (P.size() == 0) throw NumericalError(singular_grid(rates, s, k));
     const SpeedMoments r = speed_moments(grid, self, P);
     if (m != nullptr) *m = r;
     return r.theta / s.T[k] - 1.0;

@@ -117,7 +117,9 @@ TEST_CASE("missing scene file and unknown options exit 2", "[compare]") {
 }
 
 TEST_CASE("a solver failure at one sweep point exits 3 naming the solver and the point - nothing written", "[compare]") {
-  // m₂/m₁ = 10⁴ is beyond the converged HCS's speed grid (its operator is singular there): a clear error, not a number.
+  // m₂/m₁ = 10⁴, n₂ = 0.001, ε = 0.3: the rare heavy species runs away (it holds 99.8% of the energy and moves 2.4× as
+  // fast as species 1, whose speed grid its kicks leave: the operator is singular): a clear error naming that state and
+  // the levels that compute the mixture, not a number.
   const auto d = test::fresh_dir("sweep-failure");
   test::write_file(d / "s.toml", "[scene]\nname = \"s\"\n[mixture]\nspecies = [{ mass = 1, diameter = 1, density = 0.1 }, "
                                  "{ mass = 10000, diameter = 1, density = 0.001 }]\n[collisions]\nrestitution = 0.5\n"
@@ -127,6 +129,8 @@ TEST_CASE("a solver failure at one sweep point exits 3 naming the solver and the
   INFO(r.output);
   CHECK(r.code == 3);
   CHECK(r.output.find("converged HCS") != std::string::npos);
+  CHECK(r.output.find("species 2 moves 2.42x as fast and holds 99.8% of the energy") != std::string::npos);
+  CHECK(r.output.find("level kinetic or kinetic-converged computes this mixture") != std::string::npos);
   CHECK(r.output.find("(at the sweep point eps = 0.3)") != std::string::npos);
   CHECK(!std::filesystem::exists(d / "out" / "s" / "theory.tsv"));
 }
