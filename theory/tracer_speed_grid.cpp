@@ -84,6 +84,17 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
   const GaussRule &uq = speed_rule(), &wz = rule.wz, &wp = rule.wp, &cs = rule.cs;
   const std::size_t nb = std::size_t(coll.rows()), nf = rule.cos_phi.size();
   const double inv_h = 1.0 / h;
+  // The gas velocities w = (w_x, 0, w_z) and their weights (shape included) do not depend on u.
+  struct GasNode {
+    double w_z, w_x, weight;
+  };
+  std::vector<GasNode> gas;
+  for (std::size_t a = 0; a < wz.x.size(); ++a)
+    for (std::size_t b = 0; b < wp.x.size(); ++b) {
+      const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
+      const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
+      gas.push_back({p.sd_gas * wz.x[a], p.sd_gas * std::sqrt(2.0 * wp.x[b]), wz.weight[a] * wp.weight[b] * shape * p.rate * 2.0 * std::numbers::pi / double(rule.azimuths)});
+    }
   // Three entries past the last spline: a speed in the last knot interval scatters into them, and they are dropped.
   std::vector<double> C(nb + 3), C1(full ? nb + 3 : 0);
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
@@ -92,42 +103,39 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
     std::fill(C.begin(), C.end(), 0.0);
     std::fill(C1.begin(), C1.end(), 0.0);
     double G = 0.0, H = 0.0, G4 = 0.0, lost = 0.0;
-    for (std::size_t a = 0; a < wz.x.size(); ++a)
-      for (std::size_t b = 0; b < wp.x.size(); ++b) {
-        const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
-        const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
-        const double w_z = p.sd_gas * wz.x[a], w_x = p.sd_gas * std::sqrt(2.0 * wp.x[b]);
-        const double gx = -w_x, gz = u - w_z, g = std::sqrt(gx * gx + gz * gz);
-        if (g == 0.0) continue;
-        const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
-        const double wab = wz.weight[a] * wp.weight[b] * shape * p.rate * g * 2.0 * std::numbers::pi / double(rule.azimuths);
-        for (std::size_t c = 0; c < cs.x.size(); ++c) {
-          const double ct = cs.x[c], st = std::sqrt(1.0 - ct * ct), w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
-          // Δv_z = dz0 + dz1 cos φ; |v′|² = base + 2u dz1 cos φ.
-          const double dz0 = -kick * ct * e3[1], dz1 = -kick * st * e1[1], base = u * u + 2.0 * u * dz0 + kick * kick;
-          double speeds[max_azimuth_pairs];
-          for (std::size_t f = 0; f < nf; ++f) speeds[f] = std::sqrt(std::max(0.0, base + 2.0 * u * dz1 * rule.cos_phi[f]));  // vectorised
-          for (std::size_t f = 0; f < nf; ++f) {
-            const double cp = rule.cos_phi[f], wf = w * rule.phi_weight[f];
-            const double speed = speeds[f], s = speed * inv_h;
-            lost += wf;
-            const auto j0 = std::size_t(s);
-            if (j0 >= nb) continue;  // beyond the grid: the density's mass leaves it (U = 7 widths: ~1e-19 of it)
-            double N[4];
-            splines_at(s - double(j0), N);
-            for (std::size_t e = 0; e < 4; ++e) C[j0 + e] += wf * N[e];
-            if constexpr (full) {
-              // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
-              const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
-              const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
-              const double dz = dz0 + dz1 * cp;
-              G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2, H += wf * u * dz;
-              const double turn = speed > 0.0 ? (u + dz) / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
-              for (std::size_t e = 0; e < 4; ++e) C1[j0 + e] += turn * wf * N[e];
-            }
+    for (const GasNode& node : gas) {
+      const double w_z = node.w_z, w_x = node.w_x;
+      const double gx = -w_x, gz = u - w_z, g = std::sqrt(gx * gx + gz * gz);
+      if (g == 0.0) continue;
+      const double e3[2] = {gx / g, gz / g}, e1[2] = {e3[1], -e3[0]};  // (x, z); e2 = ŷ
+      const double wab = node.weight * g;
+      for (std::size_t c = 0; c < cs.x.size(); ++c) {
+        const double ct = cs.x[c], st = rule.sin_theta[c], w = wab * cs.weight[c] * ct, kick = p.beta * g * ct;
+        // Δv_z = dz0 + dz1 cos φ; |v′|² = base + 2u dz1 cos φ.
+        const double dz0 = -kick * ct * e3[1], dz1 = -kick * st * e1[1], base = u * u + 2.0 * u * dz0 + kick * kick;
+        double speeds[max_azimuth_pairs];
+        for (std::size_t f = 0; f < nf; ++f) speeds[f] = std::sqrt(std::max(0.0, base + 2.0 * u * dz1 * rule.cos_phi[f]));  // vectorised
+        lost += w * double(rule.azimuths);  // Σ_f of the folded weights
+        for (std::size_t f = 0; f < nf; ++f) {
+          const double cp = rule.cos_phi[f], wf = w * rule.phi_weight[f];
+          const double speed = speeds[f], s = speed * inv_h;
+          const auto j0 = std::size_t(s);
+          if (j0 >= nb) continue;  // beyond the grid: the mass leaves it (converged_hcs.hpp checks a wider domain)
+          double N[4];
+          splines_at(s - double(j0), N);
+          for (std::size_t e = 0; e < 4; ++e) C[j0 + e] += wf * N[e];
+          if constexpr (full) {
+            // The gas particle: w′ = w + (m₂/m₁) kick σ̂, ΔE = (m₁/2)(2 k w·σ̂ + k²), k = (m₂/m₁) kick.
+            const double k = p.m2 / p.m1 * kick, w1 = w_x * e1[0] + w_z * e1[1], w3 = w_x * e3[0] + w_z * e3[1], ww = w_x * w_x + w_z * w_z;
+            const double dw2 = 2.0 * k * (st * cp * w1 + ct * w3) + k * k;  // |w′|² − |w|²
+            const double dz = dz0 + dz1 * cp;
+            G += wf * 0.5 * p.m1 * dw2, G4 += wf * (2.0 * ww + dw2) * dw2, H += wf * u * dz;
+            const double turn = speed > 0.0 ? (u + dz) / speed : 0.0;  // v̂·v̂′: the l = 1 harmonic's gain
+            for (std::size_t e = 0; e < 4; ++e) C1[j0 + e] += turn * wf * N[e];
           }
         }
       }
+    }
     for (std::size_t j = i; j <= i + 3; ++j) {  // the loss: every collision takes the density away from u
       const double N = lost * spline(u / h - double(j) + 3.0);
       C[j] -= N;
@@ -158,6 +166,7 @@ CollisionRule::CollisionRule(std::size_t n)
     cos_phi.push_back(std::cos(phi));
     phi_weight.push_back(2 * f + 1 == azimuths ? 1.0 : 2.0);  // M odd: φ = π is its own partner
   }
+  for (double c : cs.x) sin_theta.push_back(std::sqrt(1.0 - c * c));
   if (cos_phi.size() > max_azimuth_pairs)
     throw std::invalid_argument("collision rule: " + std::to_string(n) + " points; the limit is " + std::to_string(4 * (2 * max_azimuth_pairs - 1) / 3));
 }

@@ -37,6 +37,7 @@ struct CollisionRule {
   // The azimuths folded: φ and 2π − φ give the same collision but for the sign of v′_y, which enters the speeds and the
   // gas's gains only squared — one point of weight 2 per pair (φ = π, for M odd, weight 1).
   std::vector<double> cos_phi, phi_weight;
+  std::vector<double> sin_theta;  // √(1 − cos²θ) at the cos θ nodes
   explicit CollisionRule(std::size_t n);
 };
 
@@ -61,7 +62,7 @@ struct SpeedGrid {
 };
 // What to assemble: all of SpeedGrid, or the speed density's operator alone (collisions, drift, Gram matrices, mass,
 // u², u⁴, u⁶, u1 — what converged_hcs.hpp needs; collisions_p1, gain, drag and gain4 left empty and speed_moments'
-// gain, nu, gain4 NaN): the l = 1 harmonic and the gas's side are ~30% of the cost (9.8 against 14.1 ms on one core at
+// gain, nu, gain4 NaN): the l = 1 harmonic and the gas's side are ~35% of the cost (8.5 against 13.4 ms on one core at
 // K = 56, the 12-point rule).
 enum class SpeedGridParts { all, density };
 // The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
