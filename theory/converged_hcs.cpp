@@ -1,6 +1,7 @@
 #include "converged_hcs.hpp"
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,13 +56,13 @@ std::string singular_grid(const CollisionRates& rates, const State& s, std::size
     energy += mix[j].density * s.T[j];
     if (s.T[j] / mix[j].mass > s.T[fastest] / mix[fastest].mass) fastest = j;
   }
-  std::string why = "converged HCS: the speed grid's operator is singular for species " + std::to_string(k + 1);
+  const std::string why = fmt::format("converged HCS: the speed grid's operator is singular for species {}", k + 1);
   if (fastest == k) return why;
-  return why + " (species " + std::to_string(fastest + 1) + " moves " +
-         std::to_string(std::sqrt((s.T[fastest] / mix[fastest].mass) / (s.T[k] / mix[k].mass))).substr(0, 4) + "x as fast and holds " +
-         std::to_string(100.0 * mix[fastest].density * s.T[fastest] / energy).substr(0, 4) + "% of the energy: a rare heavy species running away, "
-         "the Santos-Dufty ordered phase; its kicks leave species " + std::to_string(k + 1) + "'s grid of " +
-         std::to_string(int(speed_grid_widths)) + " thermal widths); level kinetic or kinetic-converged computes this mixture";
+  return why + fmt::format(" (species {} moves {:.3g}x as fast and holds {:.3g}% of the energy: a rare heavy species running away, the "
+                           "Santos-Dufty ordered phase; its kicks leave species {}'s grid of {:g} thermal widths); level kinetic or "
+                           "kinetic-converged computes this mixture",
+                           fastest + 1, std::sqrt((s.T[fastest] / mix[fastest].mass) / (s.T[k] / mix[k].mass)),
+                           100.0 * mix[fastest].density * s.T[fastest] / energy, k + 1, speed_grid_widths);
 }
 
 SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const State& s, const Settings& set, double zeta_guess, double nu) {
