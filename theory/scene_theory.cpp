@@ -51,11 +51,32 @@ std::vector<double> increment_ratios(const model::Scene& point, const TheoryLeve
   p.initial.kind = model::InitialState::Kind::hcs;
   p.observables = model::Observables{};
   p.observables.msd = true;
-  SolverStats unused;
-  const std::vector<Sample> m = history_samples(p, scene_rates(p, p.mixture, p.restitution), level, unused);
-  std::vector<double> out;
-  for (std::size_t k = 0; k < p.mixture.size(); ++k)
-    out.push_back((m.back().msd[k] - m.front().msd[k]) / (m.back().msd[0] - m.front().msd[0]));
+  const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
+  auto ratios = [&](const model::Scene& q, const TheoryLevel& l) {
+    SolverStats unused;
+    const std::vector<Sample> m = history_samples(q, rates, l, unused);
+    std::vector<double> out;
+    for (std::size_t k = 0; k < q.mixture.size(); ++k) out.push_back((m.back().msd[k] - m.front().msd[k]) / (m.back().msd[0] - m.front().msd[0]));
+    return out;
+  };
+  std::vector<double> out = ratios(p, level);
+  const std::string companion = level.start_companion();
+  if (companion.empty()) return out;
+  // The start's effect: the companion's VACF history from DSMC's start (the Maxwellian HCS ratios, Maxwellian shapes)
+  // over the companion's closed form from its own settled state (ratios and shapes) at the same T₁(0) — the kind of
+  // object this level's increments are. (A VACF history from the settled ratios alone starts Maxwellian in shape: at v1
+  // Fig. 4 same-material, n₂ = 0.001, it is 0.55% below that closed form, so both halves of the start count.)
+  const std::unique_ptr<TheoryLevel> c = make_theory_level(companion);
+  TemperatureOptions opt;
+  const std::vector<double> start = c->initial_temperatures(p.initial, rates, opt);
+  std::vector<double> settled = c->settled_temperatures(rates);
+  const double scale = start[0] / settled[0];
+  for (double& T : settled) T *= scale;
+  const SettledDiffusion d = c->diffusion_at(rates, settled);
+  const double t0 = p.times.front(), t1 = p.times.back();
+  const std::vector<double> from_start = ratios(p, *c);
+  auto increment = [&](std::size_t k) { return msd_increment(d.memory_of(k), d.tau0, 0.0, t1) - msd_increment(d.memory_of(k), d.tau0, 0.0, t0); };
+  for (std::size_t k = 0; k < out.size(); ++k) out[k] *= from_start[k] / (increment(k) / increment(0));
   return out;
 }
 

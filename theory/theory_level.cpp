@@ -301,6 +301,11 @@ class ConvergedLevel final : public TheoryLevel {
   // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 2.1% and the tracer problem's 1.5%, at n₂ = 0.1 and 0.3
   // all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or miss the former.
   bool computes_d_ratio_error() const override { return hcs_converged_; }
+  // Its increments are the closed form from its own settled ratios; DSMC starts at the Maxwellian HCS (v1 Fig. 4
+  // same-material, n₂ = 0.001: T₂/T₁ 82.3 against 89.3, and the heavy grain remembers it: over [50, 5000] the closed
+  // form was 1.0% above DSMC's 18 + 18 seeds and bo2-fig02's 20). kinetic-converged-cooling3's VACF history from both
+  // starts carries the difference (its settled ratio 89.02).
+  std::string start_companion() const override { return hcs_converged_ ? "kinetic-converged-cooling3" : std::string{}; }
   std::vector<double> d_ratio_error(const CollisionRates& rates) const override {
     if (!hcs_converged_) return TheoryLevel::d_ratio_error(rates);
     return converged_d_ratio_error(rates, converged_state(rates, true)).total();

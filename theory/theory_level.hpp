@@ -62,6 +62,10 @@ class TheoryLevel {
   // judges with (error_column). The other levels compute none (they judge with companion levels, correction_from).
   virtual bool computes_d_ratio_error() const { return false; }
   virtual std::vector<double> d_ratio_error(const CollisionRates& rates) const;
+  // The level whose MSD history carries the effect of a sweep's start into this level's increments, where this level's
+  // MSD is the closed form of a settled start but DSMC starts elsewhere (kinetic-converged-hcs: its own settled ratios
+  // against DSMC's Maxwellian ones; increment_ratios, scene_theory.cpp). Empty: the level's history is from the start.
+  virtual std::string start_companion() const { return {}; }
 };
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to
