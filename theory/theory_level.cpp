@@ -209,7 +209,8 @@ class ConvergedLevel final : public TheoryLevel {
                             : std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
   const char* name() const override { return name_.c_str(); }
   // kinetic-converged-hcs: its sweep points' increments too in closed form, from the settled memory at the converged HCS
-  // (a settled start is self-similar; the VACF history follows the Sonine temperatures and shapes in time).
+  // (a settled start is self-similar; the VACF history follows the Sonine temperatures and shapes in time), times the
+  // effect of DSMC's unsettled start (start_companion below).
   MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep || hcs_converged_ ? MsdMethod::closed : MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     base_.configure(opt, rates);
