@@ -44,8 +44,9 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
                                     std::shared_ptr<GalerkinPairTables> tables = nullptr);
 
 // The theory's prediction of what the DSMC measures along a sweep (dsmc.at): D_k/D_1 as the ratio of
-// MSD increments between the first and the last [time] sample, from the same settled start, computed
-// through the level's MSD in time (transients and the MSD offset included).
+// MSD increments between the first and the last [time] sample, from DSMC's start (the "hcs" initial state), computed
+// through the level's MSD in time (transients and the MSD offset included); a level whose MSD is the closed form of its
+// own settled state has the start's effect carried by its start_companion (theory_level.hpp).
 std::vector<double> increment_ratios(const model::Scene& point, const TheoryLevel& level) {
   model::Scene p = point;
   p.initial.kind = model::InitialState::Kind::hcs;

@@ -17,8 +17,11 @@ namespace granmix::theory {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr std::size_t speed_points = 4;
-constexpr std::size_t max_azimuth_pairs = 64;  // CollisionRule(n) has (3n/4 + 1)/2: n ≤ 168  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
+constexpr std::size_t speed_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
+// The kernel's per-(gas velocity, cos θ) buffer of speeds: CollisionRule(n) folds ⌊3n/4⌋ azimuths into pairs, ≤ 64 up
+// to n = 171 (the rules in use: 12 and 16).
+constexpr std::size_t max_azimuth_pairs = 64;
+constexpr std::size_t max_rule_points = (4 * 2 * max_azimuth_pairs + 3) / 3;
 
 // The cardinal cubic B-spline on [0, 4] and its derivative.
 double spline(double x) {
@@ -168,7 +171,7 @@ CollisionRule::CollisionRule(std::size_t n)
   }
   for (double c : cs.x) sin_theta.push_back(std::sqrt(1.0 - c * c));
   if (cos_phi.size() > max_azimuth_pairs)
-    throw std::invalid_argument("collision rule: " + std::to_string(n) + " points; the limit is " + std::to_string(4 * (2 * max_azimuth_pairs - 1) / 3));
+    throw std::invalid_argument("collision rule: " + std::to_string(n) + " points; the limit is " + std::to_string(max_rule_points));
 }
 
 SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
