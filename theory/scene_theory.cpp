@@ -46,38 +46,52 @@ std::vector<Sample> history_samples(const model::Scene& s, const CollisionRates&
 // The theory's prediction of what the DSMC measures along a sweep (dsmc.at): D_k/D_1 as the ratio of
 // MSD increments between the first and the last [time] sample, from DSMC's start (the "hcs" initial state), computed
 // through the level's MSD in time (transients and the MSD offset included); a level whose MSD is the closed form of its
-// own settled state has the start's effect carried by its start_companion (theory_level.hpp).
-std::vector<double> increment_ratios(const model::Scene& point, const TheoryLevel& level) {
+// own settled state has the start's effect carried by its start_companion (theory_level.hpp). start_error (asked with
+// `checked`, per species, species 1: 0): that factor's model error, |its value by the lower companion over the
+// companion's − 1|.
+struct IncrementRatios {
+  std::vector<double> ratio, start_error;
+};
+
+IncrementRatios increment_ratios(const model::Scene& point, const TheoryLevel& level, bool checked) {
   model::Scene p = point;
   p.initial.kind = model::InitialState::Kind::hcs;
   p.observables = model::Observables{};
   p.observables.msd = true;
   const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
-  auto ratios = [&](const model::Scene& q, const TheoryLevel& l) {
+  auto ratios = [&](const TheoryLevel& l) {
     SolverStats unused;
-    const std::vector<Sample> m = history_samples(q, rates, l, unused);
+    const std::vector<Sample> m = history_samples(p, rates, l, unused);
     std::vector<double> out;
-    for (std::size_t k = 0; k < q.mixture.size(); ++k) out.push_back((m.back().msd[k] - m.front().msd[k]) / (m.back().msd[0] - m.front().msd[0]));
+    for (std::size_t k = 0; k < p.mixture.size(); ++k) out.push_back((m.back().msd[k] - m.front().msd[k]) / (m.back().msd[0] - m.front().msd[0]));
     return out;
   };
-  std::vector<double> out = ratios(p, level);
-  const std::string companion = level.start_companion();
-  if (companion.empty()) return out;
+  IncrementRatios out{ratios(level), std::vector<double>(p.mixture.size(), 0.0)};
+  const TheoryLevel::StartCompanions companion = level.start_companion();
+  if (companion.level.empty()) return out;
   // The start's effect: the companion's VACF history from DSMC's start (the Maxwellian HCS ratios, Maxwellian shapes)
   // over the companion's closed form from its own settled state (ratios and shapes) at the same T₁(0) — the kind of
   // object this level's increments are. (A VACF history from the settled ratios alone starts Maxwellian in shape: at v1
   // Fig. 4 same-material, n₂ = 0.001, it is 0.55% below that closed form, so both halves of the start count.)
-  const std::unique_ptr<TheoryLevel> c = make_theory_level(companion);
-  TemperatureOptions opt;
-  const std::vector<double> start = c->initial_temperatures(p.initial, rates, opt);
-  std::vector<double> settled = c->settled_temperatures(rates);
-  const double scale = start[0] / settled[0];
-  for (double& T : settled) T *= scale;
-  const SettledDiffusion d = c->diffusion_at(rates, settled);
-  const double t0 = p.times.front(), t1 = p.times.back();
-  const std::vector<double> from_start = ratios(p, *c);
-  auto increment = [&](std::size_t k) { return msd_increment(d.memory_of(k), d.tau0, 0.0, t1) - msd_increment(d.memory_of(k), d.tau0, 0.0, t0); };
-  for (std::size_t k = 0; k < out.size(); ++k) out[k] *= from_start[k] / (increment(k) / increment(0));
+  auto start_factor = [&](const std::string& name) {
+    const std::unique_ptr<TheoryLevel> c = make_theory_level(name);
+    TemperatureOptions opt;
+    const std::vector<double> start = c->initial_temperatures(p.initial, rates, opt);
+    std::vector<double> settled = c->settled_temperatures(rates);
+    const double scale = start[0] / settled[0];
+    for (double& T : settled) T *= scale;
+    const SettledDiffusion d = c->diffusion_at(rates, settled);
+    const double t0 = p.times.front(), t1 = p.times.back();
+    auto increment = [&](std::size_t k) { return msd_increment(d.memory_of(k), d.tau0, 0.0, t1) - msd_increment(d.memory_of(k), d.tau0, 0.0, t0); };
+    std::vector<double> f = ratios(*c);
+    for (std::size_t k = 0; k < f.size(); ++k) f[k] /= increment(k) / increment(0);
+    return f;
+  };
+  const std::vector<double> f = start_factor(companion.level);
+  for (std::size_t k = 0; k < f.size(); ++k) out.ratio[k] *= f[k];
+  if (!checked) return out;
+  const std::vector<double> lower = start_factor(companion.lower);
+  for (std::size_t k = 0; k < f.size(); ++k) out.start_error[k] = std::abs(lower[k] / f[k] - 1.0);
   return out;
 }
 
@@ -91,7 +105,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   const bool increments = o.d_ratio && s.dsmc.present && s.times.size() >= 2;
   if (o.d_ratio) t.columns.push_back("D_ratio");
   if (increments) t.columns.push_back("D_ratio_increment");
-  // The level's own model error of D_k/D_1, where it computes one: at the DSMC points only (four more HCS solves each).
+  // The level's own model error of D_k/D_1, where it computes one: at the DSMC points only (four more HCS solves each),
+  // plus its start factor's (increment_ratios: one more VACF history).
   const bool errors = increments && level.computes_d_ratio_error();
   if (errors) t.columns.push_back("D_ratio_error");
   if (o.gamma) t.columns.push_back("gamma"), t.columns.push_back("gamma_maxwell");
@@ -113,21 +128,23 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
     std::vector<double> error(N, nan);
+    const bool checked = errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end();
     if (o.d_ratio) {
       const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
       // Asked first: the level keeps the checked state for the D and increments that follow. (The DSMC points are on
       // the grid exactly: model/scene.cpp puts them there.)
-      if (errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end()) error = own->d_ratio_error(rates);
+      if (checked) error = own->d_ratio_error(rates);
       d = own->diffusion_at(rates, own->settled_temperatures(rates));
     }
-    const std::vector<double> inc = increments ? increment_ratios(p, *own) : std::vector<double>{};
+    const IncrementRatios inc = increments ? increment_ratios(p, *own, checked) : IncrementRatios{};
+    for (std::size_t k = 0; checked && k < N; ++k) error[k] += inc.start_error[k];  // the start factor's part
     SonineHcs sonine, maxwell;
     if (o.gamma || o.cumulant) sonine = sonine_of(*own, p);
     if (o.gamma) maxwell = maxwell_of(p);
     for (std::size_t k = (o.gamma ? 0 : 1); k <= N; ++k) {
       std::vector<double> row = {x, double(k)};
       if (o.d_ratio) row.push_back(k ? d.D_ratio[k - 1] : nan);
-      if (increments) row.push_back(k > 1 ? inc[k - 1] : nan);  // species 1: 1 by construction
+      if (increments) row.push_back(k > 1 ? inc.ratio[k - 1] : nan);  // species 1: 1 by construction
       if (errors) row.push_back(k > 1 ? error[k - 1] : nan);
       if (o.gamma) row.push_back(k ? nan : sonine.gamma()), row.push_back(k ? nan : maxwell.gamma());
       if (relative) row.push_back(k ? nan : sonine.gamma() / gamma0), row.push_back(k ? nan : maxwell.gamma() / gamma0_maxwell);

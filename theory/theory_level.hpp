@@ -64,8 +64,13 @@ class TheoryLevel {
   virtual std::vector<double> d_ratio_error(const CollisionRates& rates) const;
   // The level whose MSD history carries the effect of a sweep's start into this level's increments, where this level's
   // MSD is the closed form of a settled start but DSMC starts elsewhere (kinetic-converged-hcs: its own settled ratios
-  // against DSMC's Maxwellian ones; increment_ratios, scene_theory.cpp). Empty: the level's history is from the start.
-  virtual std::string start_companion() const { return {}; }
+  // against DSMC's Maxwellian ones; increment_ratios, scene_theory.cpp), and the level one order below it, whose same
+  // factor against the companion's is that factor's model error (the last correction). Empty: the level's history is
+  // from the start.
+  struct StartCompanions {
+    std::string level, lower;
+  };
+  virtual StartCompanions start_companion() const { return {}; }
 };
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to
