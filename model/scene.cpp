@@ -297,7 +297,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4"});
     if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
@@ -434,6 +434,14 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
           t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
                  level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
+        // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4; its pair terms exist
+        // in closed form only, at constant restitution).
+        if (lower == "cooling4" && (q.name != "T" || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
+          t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +
+                 "\" at theory.level \"" + level + "\"", "name = \"T\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\"");
+        if (lower == "cooling4" && s.restitution.is_viscoelastic())
+          t.fail("correction_from", "\"cooling4\" (Sonine order 4 in the temperatures) needs a constant restitution coefficient, but collisions is viscoelastic",
+                 "collisions.restitution = number, or correction_from = \"kinetic\"");
         if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
                  level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");

@@ -38,7 +38,7 @@ struct Problem {
 
 // Everything at given temperatures T_k (Σ x_k T_k = 1): λ, c (a₃ at order 3), cooling rates ζ_k.
 struct Evaluation {
-  std::vector<double> lambda, c, a3, zeta;
+  std::vector<double> lambda, c, a3, a4, zeta;
 };
 
 Evaluation evaluate(Problem& p, const std::vector<double>& T) {
@@ -48,7 +48,8 @@ Evaluation evaluate(Problem& p, const std::vector<double>& T) {
   for (std::size_t k = 0; k < N; ++k) e.lambda.push_back(p.mix[k].mass * v0sq / (2.0 * T[k]));
   if (p.moments) {  // order 3: the steady a's at these temperatures, ζ_k in units of ν_ref = n σ_ref² v0
     const std::vector<double> z = p.moments->steady_state(T.data());
-    e.c.assign(z.begin(), z.begin() + std::ptrdiff_t(N)), e.a3.assign(z.begin() + std::ptrdiff_t(N), z.end());
+    e.c.assign(z.begin(), z.begin() + std::ptrdiff_t(N)), e.a3.assign(z.begin() + std::ptrdiff_t(N), z.begin() + std::ptrdiff_t(2 * N));
+    e.a4.assign(z.begin() + std::ptrdiff_t(2 * N), z.end());  // order 4
     e.zeta.resize(N);
     p.moments->rates(T.data(), z.data(), e.zeta.data(), nullptr);
     const double nu_ref = p.mix.total_density() * p.sref2 * std::sqrt(v0sq);
@@ -135,13 +136,13 @@ std::vector<double> solve_many(Problem& p) {
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
                      bool maxwell, SonineSolver solver, int order) {
   if (alpha.is_viscoelastic()) throw std::invalid_argument("Sonine HCS: needs constant restitution coefficients");
-  if (order < 2 || order > 3 || (maxwell && order != 2)) throw std::invalid_argument("Sonine HCS: order 2 or 3 (Maxwellian: 2)");
+  if (order < 2 || order > 4 || (maxwell && order != 2)) throw std::invalid_argument("Sonine HCS: order 2, 3 or 4 (Maxwellian: 2)");
   const std::size_t N = mix.size();
   const double sref2 = std::pow(mix.sigma(0, N > 1 ? 1 : 0), 2);
   Problem p{mix, alpha, chi, maxwell, N, sref2, mix[0].mass, mix[N > 1 ? 1 : 0].mass, SonineSystem(mix, alpha, chi, sref2), nullptr, nullptr};
-  if (order == 3) {
+  if (order >= 3) {
     p.rates = std::make_unique<CollisionRates>(mix, alpha, chi);
-    p.moments = std::make_unique<SonineMomentCooling>(*p.rates, 3);
+    p.moments = std::make_unique<SonineMomentCooling>(*p.rates, order);
   }
   // An elastic mixture settles at equal temperatures (detailed balance, for any masses and sizes): every ζ_k is 0
   // there, so the relative ζ differences the root finders zero are 0/0 (v1 Fig. 7's ε = 1 with four species: hybrids
@@ -155,7 +156,7 @@ SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha,
   else
     out.T = (N == 2 && solver == SonineSolver::automatic) ? solve_binary(p) : solve_many(p);
   const Evaluation e = evaluate(p, out.T);
-  out.c = e.c, out.a3 = e.a3, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
+  out.c = e.c, out.a3 = e.a3, out.a4 = e.a4, out.lambda = e.lambda, out.zeta_star = e.zeta[0];
   for (std::size_t k = 0; k < N; ++k) {
     double b = 0.0;
     for (std::size_t j = 0; j < N; ++j) b += mix.fraction(j) * chi[k][j] * std::pow(mix.sigma(k, j), 2) / p.sref2;
@@ -169,7 +170,8 @@ double maxwellian_phi(double lambda, double v) { return std::pow(lambda / std::n
 double SonineHcs::delta(std::size_t k, double v) const {
   const double x = lambda[k] * v * v;
   if (a3.empty() || c[k] == 0.0) return sonine_S2(x);  // MG Eq. (28)
-  return sonine_S2(x) + 2.0 * a3[k] / c[k] * sonine_S3(x);  // order 3: + (a₃/a₂) S₃
+  const double d = sonine_S2(x) + 2.0 * a3[k] / c[k] * sonine_S3(x);  // order 3: + (a₃/a₂) S₃
+  return a4.empty() ? d : d + 2.0 * a4[k] / c[k] * sonine_S4(x);     // order 4: + (a₄/a₂) S₄
 }
 
 double SonineHcs::phi(std::size_t k, double v) const {

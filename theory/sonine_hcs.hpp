@@ -20,6 +20,7 @@ struct SonineHcs {
   std::vector<double> T;       // T_k/T, normalised so that Σ x_k T_k = 1
   std::vector<double> c;       // c_k = 2 a₂ (physics.md §6)
   std::vector<double> a3;      // a₃,k at order 3 (empty at the first Sonine, which truncates it)
+  std::vector<double> a4;      // a₄,k at order 4 (empty below)
   std::vector<double> lambda;  // λ_k
   std::vector<double> beta;    // β_k = π Σ_j x_j χ_kj (σ_kj/σ_ref)² (MG Eq. 20)
   double zeta_star = 0.0;      // common reduced cooling rate ζ*

@@ -54,15 +54,24 @@ std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double 
 
 namespace {
 
-// ⟨c⁴⟩ = M2 (1 + a₂), ⟨c⁶⟩ = M3 (1 + 3a₂ − a₃) over f_M (1 + a₂S₂ + a₃S₃): Γ(p + 3/2)/Γ(3/2) and ⟨c^(2p) S_q⟩.
-constexpr double M1 = 1.5, M2 = 15.0 / 4.0, M3 = 105.0 / 8.0;
+// Over f_M (1 + Σ_q a_q S_q): ⟨c^(2p)⟩ = M_p (1 + Σ_q (−1)^q C(p, q) a_q), M_p = Γ(p + 3/2)/Γ(3/2) (the Laguerre
+// moments ∫x^(1/2+p) e^(−x) L_q^(1/2) = Γ(p + 3/2)(−1)^q C(p, q)): ⟨c⁴⟩ = M₂(1 + a₂), ⟨c⁶⟩ = M₃(1 + 3a₂ − a₃),
+// ⟨c⁸⟩ = M₄(1 + 6a₂ − 4a₃ + a₄).
+constexpr double M[PM + 1] = {1.0, 1.5, 15.0 / 4.0, 105.0 / 8.0, 945.0 / 16.0};
+constexpr double moment_weight(int p, int q) {  // (−1)^q C(p, q)
+  double c = 1.0;
+  for (int j = 0; j < q; ++j) c = c * double(p - j) / double(j + 1);
+  return q % 2 == 0 ? c : -c;
+}
 
 }  // namespace
 
 SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0,
                                          std::shared_ptr<const SoninePairTerms> terms)
     : rates_(rates), order_(order), N_(rates.size()), z0_(std::move(z0)), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {
-  if (order < 2 || order > PM) throw std::invalid_argument("Sonine moment cooling: order must be 2 or 3");
+  if (order < 2 || order > PM) throw std::invalid_argument("Sonine moment cooling: order must be 2, 3 or 4");
+  // The viscoelastic law's quadrature (sonine_moment_quadrature) carries a₂, a₃ only.
+  if (order > 3 && rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine moment cooling: order 4 needs a constant restitution coefficient");
   if (z0_.empty()) z0_.assign(state_size(), 0.0);
   if (z0_.size() != state_size()) throw std::invalid_argument("Sonine moment cooling: initial state needs (order − 1) values per species");
 }
@@ -73,7 +82,8 @@ void SonineMomentCooling::assemble(const double* T) const {
   if (assembled_ && std::equal(T, T + N_, assembled_T_.begin())) return;
   assembled_T_.assign(T, T + N_), assembled_ = true;
   const model::Mixture& mix = rates_.mixture();
-  R0_.assign(N_ * PM, 0.0), self_.assign(N_ * PM * 2, 0.0), partner_.resize(N_ * N_ * PM * 2);
+  constexpr std::size_t A = PM - 1;  // Sonine coefficients a₂ … a_PM per species
+  R0_.assign(N_ * PM, 0.0), self_.assign(N_ * PM * A, 0.0), partner_.resize(N_ * N_ * PM * A);
   for (std::size_t k = 0; k < N_; ++k) {
     for (std::size_t i = 0; i < N_; ++i) {
       const double sigma = mix.sigma(k, i);
@@ -81,9 +91,9 @@ void SonineMomentCooling::assemble(const double* T) const {
           terms_->moments(k, i, mix[i].density * sigma * sigma * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i]);
       for (int p = 0; p < PM; ++p) {
         R0_[k * PM + std::size_t(p)] += H[std::size_t(p * NS)];
-        for (std::size_t j = 0; j < 2; ++j) {
-          self_[(k * PM + std::size_t(p)) * 2 + j] += H[std::size_t(p * NS) + 1 + j];
-          partner_[((k * N_ + i) * PM + std::size_t(p)) * 2 + j] = H[std::size_t(p * NS) + 3 + j];
+        for (std::size_t j = 0; j < A; ++j) {
+          self_[(k * PM + std::size_t(p)) * A + j] += H[std::size_t(p * NS) + 1 + j];
+          partner_[((k * N_ + i) * PM + std::size_t(p)) * A + j] = H[std::size_t(p * NS) + 1 + A + j];
         }
       }
     }
@@ -97,31 +107,41 @@ void SonineMomentCooling::initial_state(const double*, double rtol, double* z, d
 
 void SonineMomentCooling::rates(const double* T, const double* z, double* xi, double* dz_dt) const {
   assemble(T);
-  const bool third = order_ == 3;
-  auto a2 = [&](std::size_t k) { return 0.5 * z[k]; };
-  auto a3 = [&](std::size_t k) { return third ? z[N_ + k] : 0.0; };
+  constexpr std::size_t A = PM - 1;
+  const std::size_t used = std::size_t(order_ - 1);  // a₂ … a_order (the pair terms of higher ones are not read)
+  // a_q of species k (q ≥ 2): z holds c = 2a₂, then a₃, a₄ per species.
+  auto a = [&](int q, std::size_t k) { return q == 2 ? 0.5 * z[k] : z[std::size_t(q - 2) * N_ + k]; };
   for (std::size_t k = 0; k < N_; ++k) {
     std::array<double, PM> R1{};  // the rates' parts linear in the a's
-    for (std::size_t p = 0; p < PM; ++p) {
-      const double* s = &self_[(k * PM + p) * 2];
-      double sum = s[0] * a2(k) + s[1] * a3(k);
+    for (std::size_t p = 0; p < std::size_t(order_); ++p) {
+      const double* s = &self_[(k * PM + p) * A];
+      double sum = 0.0;
+      for (std::size_t j = 0; j < used; ++j) sum += s[j] * a(int(j) + 2, k);
       for (std::size_t i = 0; i < N_; ++i) {
-        const double* w = &partner_[((k * N_ + i) * PM + p) * 2];
-        sum += w[0] * a2(i) + w[1] * a3(i);
+        const double* w = &partner_[((k * N_ + i) * PM + p) * A];
+        double partners = 0.0;
+        for (std::size_t j = 0; j < used; ++j) partners += w[j] * a(int(j) + 2, i);
+        sum += partners;
       }
       R1[p] = sum;
     }
     const double* R0 = &R0_[k * PM];
-    const double zeta0 = -R0[0] / M1, zeta1 = -R1[0] / M1;
+    const double zeta0 = -R0[0] / M[1], zeta1 = -R1[0] / M[1];
     xi[k] = zeta0 + zeta1;
     if (!dz_dt) continue;
-    const double dM2 = R0[1] + R1[1] + 2.0 * (zeta0 * M2 * (1.0 + a2(k)) + zeta1 * M2);
-    const double da2 = dM2 / M2;
-    dz_dt[k] = 2.0 * da2;
-    if (third) {
-      const double dM3 = R0[2] + R1[2] + 3.0 * (zeta0 * M3 * (1.0 + 3.0 * a2(k) - a3(k)) + zeta1 * M3);
-      dz_dt[N_ + k] = 3.0 * da2 - dM3 / M3;
+    // d⟨c^(2p)⟩/dt = R_p + p ζ ⟨c^(2p)⟩ (ζ₁'s product with the a's dropped), then the a's from the moments:
+    // (−1)^p da_p = d⟨c^(2p)⟩/M_p − Σ_(q<p) (−1)^q C(p, q) da_q.
+    double da[PM + 1] = {};
+    for (int p = 2; p <= order_; ++p) {
+      double shape = 1.0;
+      for (int q = 2; q <= p; ++q) shape += moment_weight(p, q) * a(q, k);
+      const double dM = R0[p - 1] + R1[std::size_t(p - 1)] + double(p) * (zeta0 * M[p] * shape + zeta1 * M[p]);
+      double rest = dM / M[p];
+      for (int q = 2; q < p; ++q) rest -= moment_weight(p, q) * da[q];
+      da[p] = moment_weight(p, p) * rest;
     }
+    dz_dt[k] = 2.0 * da[2];
+    for (int p = 3; p <= order_; ++p) dz_dt[std::size_t(p - 2) * N_ + k] = da[p];
   }
 }
 

@@ -13,6 +13,7 @@ namespace granmix::theory {
 inline double sonine_S1(double x) { return 2.5 - x; }
 inline double sonine_S2(double x) { return 0.5 * x * x - 2.5 * x + 15.0 / 8.0; }
 inline double sonine_S3(double x) { return -x * x * x / 6.0 + 1.75 * x * x - 35.0 / 8.0 * x + 35.0 / 16.0; }
+inline double sonine_S4(double x) { return x * x * x * x / 24.0 - 0.75 * x * x * x + 63.0 / 16.0 * x * x - 105.0 / 16.0 * x + 315.0 / 128.0; }
 
 // E[S_p(c²) | c_z] = L_p^(−1/2)(y), y = c_z²: the two perpendicular components, |c_⊥|² ~ Exp(1) over φ_M, averaged
 // out (the Laguerre index drops by one per exponential convolution). The quadratures over the impact speed use them

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <vector>
@@ -201,6 +203,9 @@ SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, doubl
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   SonineMomentRates out{};
   constexpr std::size_t NS = sonine_moment_sources;
+  // The sources this quadrature carries (Maxwell, own a₂, a₃, partner's a₂, a₃) in the table's layout, p = 1..3; the
+  // rest (⟨c⁸⟩, a₄) is NaN: SonineMomentCooling refuses order 4 for a viscoelastic law.
+  constexpr std::size_t carried[5] = {0, 1, 2, sonine_moment_max, sonine_moment_max + 1};
   for (std::size_t n = 0; n < rule.x.size(); ++n) {
     const double u = u_scale * rule.x[n], bu = mu * (1.0 + eps_nodes[n]) * u;
     SonineMomentRates e{};
@@ -213,12 +218,14 @@ SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, doubl
         const double weights[5] = {1.0, sonine_S2(x), sonine_S3(x), S2i, S3i};
         const double d[3] = {x1 - x, x1 * x1 - x * x, x1 * x1 * x1 - x * x * x};
         for (std::size_t p = 0; p < 3; ++p)
-          for (std::size_t src = 0; src < NS; ++src) e[p * NS + src] += g * weights[src] * d[p];
+          for (std::size_t src = 0; src < 5; ++src) e[p * NS + carried[src]] += g * weights[src] * d[p];
       }
     }
     const double m = flux * rule.weight[n];
     for (std::size_t j = 0; j < out.size(); ++j) out[j] += m * e[j];
   }
+  for (std::size_t j = 0; j < out.size(); ++j)
+    if (j >= 3 * NS || std::find(std::begin(carried), std::end(carried), j % NS) == std::end(carried)) out[j] = std::numeric_limits<double>::quiet_NaN();
   return out;
 }
 

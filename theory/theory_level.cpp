@@ -68,13 +68,13 @@ constexpr std::size_t max_sonine_species = 1000;
 // Maxwellian start).
 constexpr std::size_t max_third_sonine_species = 100;
 bool third_sonine_applies(const CollisionRates& rates, int cooling_order) {
-  return cooling_order == 3 && rates.size() <= max_third_sonine_species;
+  return cooling_order >= 3 && rates.size() <= max_third_sonine_species;
 }
 std::shared_ptr<const CoolingModel> kinetic_cooling(const CollisionRates& rates, std::vector<double> z0,
                                                     std::shared_ptr<const SoninePairTerms> terms, int cooling_order) {
   if (!third_sonine_applies(rates, cooling_order))
     return std::make_shared<SonineCooling>(rates, CumulantMode::relaxing, std::move(z0), std::move(terms));
-  return std::make_shared<SonineMomentCooling>(rates, sonine_moment_max, std::move(z0), std::move(terms));
+  return std::make_shared<SonineMomentCooling>(rates, cooling_order, std::move(z0), std::move(terms));
 }
 
 bool dissipative(const model::Restitution& law, std::size_t k, std::size_t i) {
@@ -141,13 +141,13 @@ class KineticLevel final : public TheoryLevel {
   }
   SonineHcs hcs(const CollisionRates& rates) const override {
     return sonine_hcs(rates.mixture(), rates.law(), rates.contact_values(), false, SonineSolver::automatic,
-                      third_sonine_applies(rates, cooling_order_) ? 3 : 2);  // constant ε (a viscoelastic gas has no HCS)
+                      third_sonine_applies(rates, cooling_order_) ? cooling_order_ : 2);  // constant ε (a viscoelastic gas has no HCS)
   }
   TracerLimit tracer(const CollisionRates& rates) const override { return sonine_tracer_limit(rates, {true, order_}); }
 
  private:
   static std::string level_name(std::size_t order, int cooling_order, bool shaped) {
-    const std::string base = cooling_order == 3 ? (shaped ? "kinetic-cooling3-shaped" : "kinetic-cooling3") : "kinetic";
+    const std::string base = cooling_order == 4 ? "kinetic-cooling4" : cooling_order == 3 ? (shaped ? "kinetic-cooling3-shaped" : "kinetic-cooling3") : "kinetic";
     return order == kinetic_sonine_order ? base : base + "-sonine" + std::to_string(order);
   }
   std::size_t order_;
@@ -242,7 +242,7 @@ class ConvergedLevel final : public TheoryLevel {
       const double zeta = c.zeta * std::sqrt(T[0] / c.hcs.T[0]);
       for (std::size_t k = 0; k < N; ++k) a2[k] = 0.5 * c.hcs.c[k], a3[k] = c.hcs.a3[k], xi[k] = zeta;
     } else if (sonine_applies(rates) && third_sonine_applies(rates, cooling_order_)) {
-      const SonineMomentCooling m(rates, sonine_moment_max, {}, make_sonine_pair_terms(rates.law()));
+      const SonineMomentCooling m(rates, 3, {}, make_sonine_pair_terms(rates.law()));
       const std::vector<double> z = m.steady_state(T.data());
       std::vector<double> dz(z.size());
       m.rates(T.data(), z.data(), xi.data(), dz.data());
@@ -412,6 +412,8 @@ std::string companion_level(const std::string& level, const std::string& correct
   if (level == "kinetic-converged-cooling3" && correction == "converged") return "kinetic-converged";
   if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
+  // The temperatures' next Sonine order: the order-3 levels' temperatures are kinetic-cooling3's (model/scene.cpp: T only).
+  if (correction == "cooling4" && (level == "kinetic-cooling3" || level == "kinetic-converged-cooling3")) return "kinetic-cooling4";
   if (correction == "reshaped" && level.starts_with("kinetic-converged") && !level.ends_with("-reshaped")) return level + "-reshaped";
   if (correction == "sonine1" && (level == "kinetic" || level == "kinetic-cooling3")) return level + "-sonine1";
   throw std::invalid_argument("no companion level '" + correction + "' beside the level '" + level + "'");
@@ -422,6 +424,7 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic") return std::make_unique<KineticLevel>(kinetic_sonine_order);
   if (name == "kinetic-cooling3") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3);
   if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
+  if (name == "kinetic-cooling4") return std::make_unique<KineticLevel>(kinetic_sonine_order, 4);
   if (name == "kinetic-hcs-converged") return std::make_unique<HcsConvergedLevel>();
   if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(2);
   if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(3);
@@ -432,7 +435,7 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs)");
 }
 
 }  // namespace granmix::theory

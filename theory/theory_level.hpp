@@ -9,7 +9,8 @@
 //            first-Sonine HCS (MG App. A); for a viscoelastic law the same integrals by quadrature over the
 //            impact speed (sonine_quadrature.hpp). Variants: kinetic-sonineN (D to order N), kinetic-cooling3
 //            (temperatures with a₂ and a₃, sonine_moment_cooling.hpp, and the order-3 HCS; judged by v1 Figs. 2, 9, 10),
-//            kinetic-cooling3-sonineN, kinetic-cooling3-shaped (and the a's in D); kinetic-hcs-converged (its HCS
+//            kinetic-cooling3-sonineN, kinetic-cooling3-shaped (and the a's in D), kinetic-cooling4 (a₄ too, constant
+//            restitution: the order-3 temperatures' next correction, correction_from = "cooling4"); kinetic-hcs-converged (its HCS
 //            without the Sonine truncation, converged_hcs.hpp; judged by MG Figs. 2, 4, 5).
 // Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
 // Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
@@ -75,7 +76,8 @@ class TheoryLevel {
 
 // "paper" or "kinetic" (scene.theory.level), or "kinetic-sonineN", N = 1 … 5 (the kinetic level with D_k to
 // Sonine order N, the lower order of a scene's correction_from = "sonineN"), the variants "kinetic-cooling3",
-// "kinetic-cooling3-shaped", "kinetic-cooling3-sonineN" and "kinetic-hcs-converged"; throws std::invalid_argument otherwise.
+// "kinetic-cooling3-shaped", "kinetic-cooling3-sonineN", "kinetic-cooling4" and "kinetic-hcs-converged"; throws
+// std::invalid_argument otherwise.
 std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name);
 
 // The level whose curves a scene at `level` compares with for correction_from = `correction` (theory.tsv columns

@@ -20,6 +20,7 @@
 #include "theory/sonine_cooling.hpp"
 #include "theory/sonine_hcs.hpp"
 #include "theory/sonine_moment_cooling.hpp"
+#include "theory/sonine_moment_table.hpp"
 #include "theory/sonine_second_order.hpp"
 #include "theory/temperature_history.hpp"
 #include "gauss_rules.hpp"
@@ -33,12 +34,14 @@ namespace {
 
 // H(p; source) by quadrature over both Maxwellians and σ̂ in the variables of test_sonine_modes.cpp's C_pq
 // quadrature (relative speed Gauss–Laguerre, centre part Gauss–Hermite, σ̂ Gauss–Legendre × trapezoid), the
-// partner's velocity v − g ẑ: exact rules for these polynomial integrands (degree ≤ 18 per variable).
-std::array<double, 15> quadrature_H(double mu, double eps, double Ak, double Ai) {
+// partner's velocity v − g ẑ: exact rules for these polynomial integrands (degree ≤ 18 per variable). The sources in
+// the table's order: Maxwell, own a₂, a₃, a₄, partner's a₂, a₃, a₄.
+constexpr int P = sonine_moment_max, S = sonine_moment_sources;
+std::array<double, P * S> quadrature_H(double mu, double eps, double Ak, double Ai) {
   const double V = Ak + Ai, a = Ak / V, sG = std::sqrt(2.0 * Ak * Ai / V), beta = mu * (1 + eps);
-  static const test::Rule H = test::hermite(10), L = test::laguerre(14), P = test::legendre01(12);
+  static const test::Rule H = test::hermite(10), L = test::laguerre(14), Q = test::legendre01(12);
   const int nphi = 24;
-  std::array<double, 15> sum{};
+  std::array<double, P * S> sum{};
   for (std::size_t iu = 0; iu < L.x.size(); ++iu) {
     const double g = std::sqrt(2.0 * V * L.x[iu]), wu = L.w[iu] * std::sqrt(L.x[iu]) / (0.5 * std::sqrt(pi));
     for (std::size_t i = 0; i < H.x.size(); ++i)
@@ -49,17 +52,17 @@ std::array<double, 15> quadrature_H(double mu, double eps, double Ak, double Ai)
           const double c2 = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]) / (2 * Ak);
           const double ci2 = (v[0] * v[0] + v[1] * v[1] + (v[2] - g) * (v[2] - g)) / (2 * Ai);
           using test::scalar_sonine;
-          const double W[5] = {1.0, scalar_sonine(2, c2), scalar_sonine(3, c2), scalar_sonine(2, ci2), scalar_sonine(3, ci2)};
-          for (std::size_t t = 0; t < P.x.size(); ++t) {
-            const double ct = P.x[t], st = std::sqrt(1 - ct * ct), gs = g * ct;
+          const double W[S] = {1.0, scalar_sonine(2, c2), scalar_sonine(3, c2), scalar_sonine(4, c2), scalar_sonine(2, ci2), scalar_sonine(3, ci2), scalar_sonine(4, ci2)};
+          for (std::size_t t = 0; t < Q.x.size(); ++t) {
+            const double ct = Q.x[t], st = std::sqrt(1 - ct * ct), gs = g * ct;
             for (int f = 0; f < nphi; ++f) {
               const double phi = 2 * pi * f / nphi, s[3] = {st * std::cos(phi), st * std::sin(phi), ct};
               double vp2 = 0;
               for (int d = 0; d < 3; ++d) vp2 += std::pow(v[d] - beta * gs * s[d], 2);
-              const double cp2 = vp2 / (2 * Ak), weight = wG * P.w[t] * (2 * pi / nphi) * gs;
-              for (int p = 1; p <= 3; ++p) {
+              const double cp2 = vp2 / (2 * Ak), weight = wG * Q.w[t] * (2 * pi / nphi) * gs;
+              for (int p = 1; p <= P; ++p) {
                 const double gain = std::pow(cp2, p) - std::pow(c2, p);
-                for (int src = 0; src < 5; ++src) sum[(p - 1) * 5 + src] += weight * W[src] * gain;
+                for (int src = 0; src < S; ++src) sum[(p - 1) * S + src] += weight * W[src] * gain;
               }
             }
           }
@@ -70,16 +73,16 @@ std::array<double, 15> quadrature_H(double mu, double eps, double Ak, double Ai)
 
 }  // namespace
 
-TEST_CASE("Sonine moments: the H(p, source) table equals a quadrature over both Maxwellians and sigma, p = 1..3", "[theory]") {
+TEST_CASE("Sonine moments: the H(p, source) table equals a quadrature over both Maxwellians and sigma, p = 1..4", "[theory]") {
   std::mt19937_64 rng(41);
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 2; ++trial) {
     const double mu = 0.05 + 0.9 * u(rng), eps = u(rng), Ak = std::pow(10.0, u(rng) - 0.5), Ai = std::pow(10.0, u(rng) - 0.5);
-    const std::array<double, 15> table = sonine_moment_pair(1.0, mu, eps, Ak, Ai), quad = quadrature_H(mu, eps, Ak, Ai);
-    for (int e = 0; e < 15; ++e) {
-      INFO("p = " << e / 5 + 1 << ", source = " << e % 5 << ", mu = " << mu << ", eps = " << eps << ", Ak = " << Ak << ", Ai = " << Ai);
+    const std::array<double, P * S> table = sonine_moment_pair(1.0, mu, eps, Ak, Ai), quad = quadrature_H(mu, eps, Ak, Ai);
+    for (int e = 0; e < P * S; ++e) {
+      INFO("p = " << e / S + 1 << ", source = " << e % S << ", mu = " << mu << ", eps = " << eps << ", Ak = " << Ak << ", Ai = " << Ai);
       // Exact rules: rounding only. A coefficient off by 1% moves an entry by >= 1e-3 of its row's scale.
-      CHECK(quad[e] == Approx(table[e]).epsilon(1e-9).margin(1e-11 * std::abs(table[(e / 5) * 5])));
+      CHECK(quad[e] == Approx(table[e]).epsilon(1e-9).margin(1e-11 * std::abs(table[(e / S) * S])));
     }
   }
 }
@@ -172,4 +175,51 @@ TEST_CASE("Sonine HCS at order 3: the long-time state of the order-3 temperature
       CHECK(multi.gamma() == Approx(three.gamma()).epsilon(1e-10));
     }
   }
+}
+
+TEST_CASE("Sonine HCS at order 4: MG binaries against scripts/mg_gamma_sonine_orders.py, and the order-4 ODE settles there", "[theory]") {
+  // The script solves the binary HCS at Sonine order K by its own assembly of the rates (sympy's H(p; q, r), the
+  // moments' Sonine weights from their definition) and Newton (python3 scripts with hcs_gamma(mu, delta, alpha, 4),
+  // 2026-12-05): gamma and c_1. Order 4 moves gamma by −0.74% at the first point and c_1 by +32%: a wrong a₄ term
+  // (its ⟨c⁸⟩ weights, a source in the wrong slot) moves both by far more than the bounds.
+  struct Case {
+    double mu, delta, alpha, gamma3, gamma4, c1_4;
+  };
+  for (const Case& c : {Case{4, 0.25, 0.3, 3.4730407320, 3.4473569551, 0.2507019971}, Case{2, 2, 0.5, 1.3480473310, 1.3465901530, 0.1193073843},
+                        Case{0.1, 2, 0.8, 0.4573105873, 0.4574336933, -0.0180996705}}) {
+    const model::Mixture mix = model::montanero_garzo_binary(c.mu, c.delta, 1, 0);
+    const auto chi = model::dilute_contact_values(2);
+    const model::Restitution law = model::Restitution::constant(2, c.alpha);
+    const SonineHcs three = sonine_hcs(mix, law, chi, false, SonineSolver::automatic, 3), four = sonine_hcs(mix, law, chi, false, SonineSolver::automatic, 4);
+    std::printf("MG mu = %g, delta = %g, alpha = %g: gamma order 3 %.8f, order 4 %.8f (script %.8f), c1 %.6f (script %.6f)\n", c.mu, c.delta, c.alpha,
+                three.gamma(), four.gamma(), c.gamma4, four.c[0], c.c1_4);
+    CHECK(three.gamma() == Approx(c.gamma3).epsilon(1e-8));
+    CHECK(four.gamma() == Approx(c.gamma4).epsilon(1e-8));
+    CHECK(four.c[0] == Approx(c.c1_4).epsilon(1e-6));
+    REQUIRE(four.a4.size() == 2);
+  }
+  // The order-4 temperature ODE from equal temperatures settles at that root (the first case).
+  const model::Mixture mix = model::montanero_garzo_binary(4, 0.25, 1, 0);
+  const auto chi = model::dilute_contact_values(2);
+  const model::Restitution law = model::Restitution::constant(2, 0.3);
+  const SonineHcs four = sonine_hcs(mix, law, chi, false, SonineSolver::automatic, 4);
+  const CollisionRates r(mix, law, chi);
+  TemperatureOptions o;
+  auto model = std::make_shared<SonineMomentCooling>(r, 4);
+  o.cooling = model;
+  const TemperatureHistory h(r, {1.0, 1.0}, 1e12, o);
+  std::vector<double> T(2), z(model->state_size());
+  h.temperatures(1e12, T.data());
+  h.states(1e12, z.data());
+  REQUIRE(z.size() == 6);
+  CHECK((T[0] / T[1]) / four.gamma() == Approx(1.0).epsilon(1e-6));
+  for (std::size_t k = 0; k < 2; ++k) {
+    CHECK(z[k] == Approx(four.c[k]).margin(1e-6));
+    CHECK(z[2 + k] == Approx(four.a3[k]).margin(1e-6));
+    CHECK(z[4 + k] == Approx(four.a4[k]).margin(1e-6));
+  }
+  // A viscoelastic law's quadrature carries a₂, a₃ only: order 4 is refused, not computed with NaN.
+  const model::Mixture two({{1.0, 1.0, 0.1}, {7.0, 2.0, 0.05}});
+  const CollisionRates visco(two, model::Restitution::viscoelastic(two, 0.3, model::ViscoelasticForm::pade), model::dilute_contact_values(2));
+  CHECK_THROWS_AS(SonineMomentCooling(visco, 4), std::invalid_argument);
 }
