@@ -70,8 +70,6 @@ SonineMomentCooling::SonineMomentCooling(const CollisionRates& rates, int order,
                                          std::shared_ptr<const SoninePairTerms> terms)
     : rates_(rates), order_(order), N_(rates.size()), z0_(std::move(z0)), terms_(terms ? std::move(terms) : make_sonine_pair_terms(rates.law())) {
   if (order < 2 || order > PM) throw std::invalid_argument("Sonine moment cooling: order must be 2, 3 or 4");
-  // The viscoelastic law's quadrature (sonine_moment_quadrature) carries a₂, a₃ only.
-  if (order > 3 && rates.law().is_viscoelastic()) throw std::invalid_argument("Sonine moment cooling: order 4 needs a constant restitution coefficient");
   if (z0_.empty()) z0_.assign(state_size(), 0.0);
   if (z0_.size() != state_size()) throw std::invalid_argument("Sonine moment cooling: initial state needs (order − 1) values per species");
 }
@@ -88,7 +86,7 @@ void SonineMomentCooling::assemble(const double* T) const {
     for (std::size_t i = 0; i < N_; ++i) {
       const double sigma = mix.sigma(k, i);
       const std::array<double, PM * NS> H =
-          terms_->moments(k, i, mix[i].density * sigma * sigma * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i]);
+          terms_->moments(k, i, mix[i].density * sigma * sigma * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], order_);
       for (int p = 0; p < PM; ++p) {
         R0_[k * PM + std::size_t(p)] += H[std::size_t(p * NS)];
         for (std::size_t j = 0; j < A; ++j) {

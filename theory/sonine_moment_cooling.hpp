@@ -11,7 +11,7 @@
 // 2–4% warmer than the first-Sonine rates say, and `granmix bench gaps` shows the rates are right when given the
 // measured c_k(t): it is the ⟨c⁴⟩ balance truncated at a₂ that is wrong for a species far from its partners'
 // temperature (v1 Fig. 2: first Sonine settles its c₁ at 0.038, order 3 at 0.008, DSMC at −0.005 ± 0.003).
-// Order 4 (constant restitution) adds a₄ and the ⟨c⁸⟩ balance, ⟨c⁸⟩ = 945/16 (1 + 6a₂ − 4a₃ + a₄): the next order's
+// Order 4 adds a₄ and the ⟨c⁸⟩ balance, ⟨c⁸⟩ = 945/16 (1 + 6a₂ − 4a₃ + a₄): the next order's
 // correction to order 3's temperatures, the model error its scenes judge with (level kinetic-cooling4).
 // Unknowns z: c_k = 2a_k2 (the cumulant, as SonineCooling's), then a_k3 (order ≥ 3), then a_k4 (order 4). One object
 // serves one integration at a time.
@@ -37,7 +37,7 @@ SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, doub
 
 class SonineMomentCooling final : public CoolingModel {
  public:
-  // order 2, 3 or 4 (4: constant restitution); z0: the initial unknowns (empty: 0, the Maxwellian start); terms: the pair terms (null: made
+  // order 2, 3 or 4; z0: the initial unknowns (empty: 0, the Maxwellian start); terms: the pair terms (null: made
   // from the law — closed forms at constant ε, the quadrature over the impact speed for a viscoelastic law).
   SonineMomentCooling(const CollisionRates& rates, int order, std::vector<double> z0 = {},
                       std::shared_ptr<const SoninePairTerms> terms = nullptr);

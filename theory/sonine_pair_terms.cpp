@@ -37,7 +37,7 @@ class ClosedFormTerms final : public SoninePairTerms {
       cached = {beta, modes, sources, sonine_cpq_beta_polynomials(beta, modes, sources)};
     return finish(sonine_pair_integrals_from(cached.polys, weight, beta, Tk / mk, Ti / mi, modes, sources), eps, mk, mi, Tk, Ti, partner_sonine);
   }
-  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int) const override {
     // The moment table's β polynomials per ordered pair (β fixed within an integration), made on first use.
     const double beta = mi / (mi + mk) * (1.0 + law_.eps(k, i));
     const std::size_t N = law_.size();
@@ -90,9 +90,9 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     s.C.add(q.C, weight);
     return s;
   }
-  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const override {
+  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int order) const override {
     const double Ak = Tk / mk, Ai = Ti / mi;
-    SonineMomentRates H = sonine_moment_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai));
+    SonineMomentRates H = sonine_moment_quadrature(Ak, Ai, mi / (mi + mk), eps_nodes(k, i, Ak + Ai), order);
     for (double& x : H) x *= weight;
     return H;
   }

@@ -32,11 +32,11 @@ class SoninePairTerms {
   // coefficients of the partner's a₂, a₃ in C_pq (closed forms at constant ε; the quadrature leaves them zero).
   virtual SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti,
                                   std::size_t modes, bool partner_sonine) const = 0;
-  // The order-3 moment closure's pair rates (sonine_moment_cooling.hpp): rates of ⟨c^(2p)⟩_k, p = 1…3, from
-  // collisions with i per unit Sonine coefficient, entry (p − 1)·5 + source (Maxwell, own a₂, own a₃, partner's a₂,
-  // partner's a₃); weight = n_i σ_ki² χ_ki. Closed forms at constant ε (sonine_moment_table.hpp), the quadrature
-  // over the impact speed otherwise (sonine_quadrature.hpp).
-  virtual SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti) const = 0;
+  // The moment closure's pair rates at `order` 2 … 4 (sonine_moment_cooling.hpp): rates of ⟨c^(2p)⟩_k from collisions
+  // with i per unit Sonine coefficient, in the table's layout (sonine_moment_table.hpp: Maxwell, own a₂ … a₄,
+  // partner's a₂ … a₄); weight = n_i σ_ki² χ_ki. Closed forms at constant ε (every entry), the quadrature over the
+  // impact speed otherwise (sonine_quadrature.hpp: entries beyond `order`, at least 3, are NaN).
+  virtual SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int order) const = 0;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

@@ -20,6 +20,7 @@ inline double sonine_S4(double x) { return x * x * x * x / 24.0 - 0.75 * x * x *
 // for the partner's Sonine weight (sonine_quadrature.cpp).
 inline double sonine_axial_S2(double y) { return 0.5 * y * y - 1.5 * y + 0.375; }
 inline double sonine_axial_S3(double y) { return -y * y * y / 6.0 + 1.25 * y * y - 1.875 * y + 0.3125; }
+inline double sonine_axial_S4(double y) { return y * y * y * y / 24.0 - 7.0 / 12.0 * y * y * y + 35.0 / 16.0 * y * y - 35.0 / 16.0 * y + 35.0 / 128.0; }
 
 // S[p] = L_p^(3/2)(x), p < modes (the recurrence (n+1)L_{n+1} = (2n + 5/2 − x)L_n − (n + 3/2)L_{n−1}).
 inline void sonine_vector_basis(double x, std::size_t modes, double* S) {

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <iterator>
 #include <limits>
 #include <numbers>
 #include <stdexcept>
@@ -195,37 +194,44 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
   return out;
 }
 
-SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes) {
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order) {
   const GaussRule& rule = impact_speed_rule();
-  const GaussRule &hermite = mode_rules().hermite[4], &laguerre = mode_rules().laguerre[4];  // 8 and 4 points
+  // Order 3: Hermite 8 × Laguerre 4 (degree 12 in W, 6 in r); order 4: 10 × 5 (S₄ times the change of v⁸: 16 and 8).
+  const std::size_t rules = order > 3 ? 5 : 4;
+  const GaussRule &hermite = mode_rules().hermite[rules], &laguerre = mode_rules().laguerre[rules];
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   const double inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
+  constexpr std::size_t NS = sonine_moment_sources, PM = sonine_moment_max;
+  const std::size_t P = order > 3 ? PM : 3, A = P - 1;  // moments p = 1 … P, Sonine coefficients a₂ … a_P
   SonineMomentRates out{};
-  constexpr std::size_t NS = sonine_moment_sources;
-  // The sources this quadrature carries (Maxwell, own a₂, a₃, partner's a₂, a₃) in the table's layout, p = 1..3; the
-  // rest (⟨c⁸⟩, a₄) is NaN: SonineMomentCooling refuses order 4 for a viscoelastic law.
-  constexpr std::size_t carried[5] = {0, 1, 2, sonine_moment_max, sonine_moment_max + 1};
   for (std::size_t n = 0; n < rule.x.size(); ++n) {
     const double u = u_scale * rule.x[n], bu = mu * (1.0 + eps_nodes[n]) * u;
     SonineMomentRates e{};
     for (std::size_t h = 0; h < hermite.x.size(); ++h) {
       const double W = sW * hermite.x[h], zk = W + alpha * u, zk1 = zk - bu, zi = W - (1.0 - alpha) * u;
-      const double y = zi * zi * inv2i, S2i = sonine_axial_S2(y), S3i = sonine_axial_S3(y);  // E[S_p(c_i²) | v_iz]
+      const double y = zi * zi * inv2i;
+      const double partner[3] = {sonine_axial_S2(y), sonine_axial_S3(y), sonine_axial_S4(y)};  // E[S_q(c_i²) | v_iz]
       for (std::size_t l = 0; l < laguerre.x.size(); ++l) {
         const double g = hermite.weight[h] * laguerre.weight[l], r = laguerre.x[l];  // r = |v_k⊥|²/(2θ_k)
         const double x = r + zk * zk * inv2k, x1 = r + zk1 * zk1 * inv2k;          // c², c′²
-        const double weights[5] = {1.0, sonine_S2(x), sonine_S3(x), S2i, S3i};
-        const double d[3] = {x1 - x, x1 * x1 - x * x, x1 * x1 * x1 - x * x * x};
-        for (std::size_t p = 0; p < 3; ++p)
-          for (std::size_t src = 0; src < 5; ++src) e[p * NS + carried[src]] += g * weights[src] * d[p];
+        const double own[3] = {sonine_S2(x), sonine_S3(x), sonine_S4(x)};
+        double xp = x, x1p = x1;  // x^p, x1^p
+        for (std::size_t p = 0; p < P; ++p, xp *= x, x1p *= x1) {
+          const double d = g * (x1p - xp);
+          e[p * NS] += d;
+          for (std::size_t q = 0; q < A; ++q) e[p * NS + 1 + q] += own[q] * d, e[p * NS + PM + q] += partner[q] * d;
+        }
       }
     }
     const double m = flux * rule.weight[n];
     for (std::size_t j = 0; j < out.size(); ++j) out[j] += m * e[j];
   }
-  for (std::size_t j = 0; j < out.size(); ++j)
-    if (j >= 3 * NS || std::find(std::begin(carried), std::end(carried), j % NS) == std::end(carried)) out[j] = std::numeric_limits<double>::quiet_NaN();
+  // Below order 4 the ⟨c⁸⟩ row and the a₄ sources are not computed: NaN, so that no order-4 closure reads them.
+  for (std::size_t j = 0; j < out.size(); ++j) {
+    const std::size_t p = j / NS, src = j % NS;  // source 1 + q: own a_(q+2); PM + q: the partner's
+    if (p >= P || (src != 0 && (src - 1) % (PM - 1) >= A)) out[j] = std::numeric_limits<double>::quiet_NaN();
+  }
   return out;
 }
 

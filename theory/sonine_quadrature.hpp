@@ -58,13 +58,14 @@ std::size_t sonine_quadrature_nodes();
 void sonine_quadrature_speeds(double V, double* u);
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes = 2);
 
-// The rates of the order-3 moment closure (sonine_moment_cooling.hpp) by the same quadrature: rates of ⟨c^(2p)⟩_k,
-// c = v/√(2θ_k), p = 1…3, per unit n_i σ_ki² χ_ki and Sonine coefficient, in the table's layout (sonine_moment_table.hpp;
-// Maxwell, own a₂, a₃, partner's a₂, a₃; the ⟨c⁸⟩ row and the a₄ sources NaN: order 3 at most), with
-// f = f_M(1 + a₂S₂ + a₃S₃) kept to first order in the a's; at constant ε
+// The rates of the moment closure at order 3 or 4 (sonine_moment_cooling.hpp) by the same quadrature: rates of ⟨c^(2p)⟩_k,
+// c = v/√(2θ_k), p = 1…order, per unit n_i σ_ki² χ_ki and Sonine coefficient, in the table's layout
+// (sonine_moment_table.hpp; Maxwell, own a₂ … a_order, partner's a₂ … a_order; order 3: the ⟨c⁸⟩ row and the a₄
+// sources NaN), with f = f_M(1 + Σ a_q S_q) kept to first order in the a's; at constant ε
 // these are the closed forms of sonine_moment_pair (tested). E[· | u] exact: Hermite 8 points in W (degree 12:
-// S₃ times the change of v⁶), Laguerre 4 in |v_k⊥|² (degree 6), E[S₃(c_i²) | v_iz] = L₃^(−1/2)(y) in closed form.
-SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes);
+// S₃ times the change of v⁶), Laguerre 4 in |v_k⊥|² (degree 6), E[S_q(c_i²) | v_iz] = L_q^(−1/2)(y) in closed form;
+// order 4: Hermite 10, Laguerre 5 (S₄ times the change of v⁸: degree 16 and 8).
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order = 3);
 
 // The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
 // (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the

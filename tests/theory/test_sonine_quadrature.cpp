@@ -214,6 +214,23 @@ TEST_CASE("Sonine quadrature: the order-3 moment rates at constant eps equal the
   CHECK(worst < 1e-8);  // the bound of the first-Sonine terms above: rounding and the u rule, not a wrong term
 }
 
+TEST_CASE("Sonine quadrature: the order-4 moment rates at constant eps equal the closed forms, all 28 (the a4 sources, <c^8>)", "[theory]") {
+  // The larger rule (Hermite 10, Laguerre 5) and E[S₄(c_i²) | v_iz] = L₄^(−1/2): exact for the order-4 integrands, so
+  // rounding only; a wrong axial S₄ coefficient or a source in the wrong slot moves an entry by far more.
+  std::mt19937_64 gen(17);
+  std::uniform_real_distribution<double> U(0.0, 1.0);
+  double worst = 0.0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const double eps = trial == 0 ? 1.0 : U(gen), Ak = 0.1 + 3 * U(gen), Ai = 0.1 + 3 * U(gen), mu = 0.02 + 0.96 * U(gen);
+    std::vector<double> nodes(sonine_quadrature_nodes(), eps);
+    const SonineMomentRates q = sonine_moment_quadrature(Ak, Ai, mu, nodes.data(), 4), c = sonine_moment_pair(1.0, mu, eps, Ak, Ai);
+    const double scale = 1e-3 * std::sqrt(Ak + Ai);
+    for (std::size_t j = 0; j < q.size(); ++j) worst = std::max(worst, rel(q[j], c[j], scale));
+  }
+  std::printf("order-4 moment rates, constant-eps limit: largest relative difference %.2e\n", worst);
+  CHECK(worst < 1e-7);  // the impact-speed rule's part grows with p (8.7e-9 measured); a wrong term is >= 1e-3
+}
+
 TEST_CASE("Sonine quadrature: the order-3 moment rates of a viscoelastic pair against a Monte Carlo over sampled pairs", "[theory]") {
   // The estimator 4π Θ(g·σ̂)(g·σ̂) S Δ(c^(2p)) for S ∈ {1, S₂(c_k²), S₃(c_k²), S₂(c_i²), S₃(c_i²)}, p = 1…3, over pairs
   // from the two Maxwellians and σ̂ uniform (the full three-dimensional integrand, not the quadrature's conditional
