@@ -435,9 +435,9 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
           t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
                  level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
         // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4).
-        if (lower == "cooling4" && (q.name != "T" || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
+        if (lower == "cooling4" && ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
           t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +
-                 "\" at theory.level \"" + level + "\"", "name = \"T\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\"");
+                 "\" at theory.level \"" + level + "\"", "name = \"T\" or \"gamma\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\"");
         if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
                  level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");
