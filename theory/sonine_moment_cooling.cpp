@@ -8,6 +8,7 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <fmt/format.h>
 
 #include "equilibrated_solve.hpp"
 #include "sonine_moment_table.hpp"
@@ -166,7 +167,9 @@ std::vector<double> SonineMomentCooling::steady_state(const double* T) const {
     for (std::size_t i = 0; i < n; ++i) A(Eigen::Index(i), Eigen::Index(j)) = d[i] - b[i];
   }
   const Eigen::VectorXd x = solve_equilibrated(A, -Eigen::Map<const Eigen::VectorXd>(b.data(), Eigen::Index(n)),
-                                                "Sonine moments at order " + std::to_string(order_) + ": the steady a's");
+                                                "Sonine moments at order " + std::to_string(order_) + ": the steady a's at T_max/T_min = " +
+                                                    fmt::format("{:.4g}", *std::max_element(T, T + N_) / *std::min_element(T, T + N_)) +
+                                                    " (no steady shape there: the linear closure breaks down)");
   return std::vector<double>(x.data(), x.data() + n);
 }
 

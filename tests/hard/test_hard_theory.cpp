@@ -131,17 +131,25 @@ TEST_CASE("kinetic-converged: a viscoelastic gas has no settled memory (refused,
   }
 }
 
-TEST_CASE("mass ratio 1e3 and 1e4, a rare heavy species: the Sonine HCS at orders 2 and 3 is found, first-Sonine cooling rates equal there", "[theory][hard]") {
+TEST_CASE("mass ratio 1e3 and 1e4, a rare heavy species: the Sonine HCS at orders 2, 3 and 4 is found, first-Sonine cooling rates equal there", "[theory][hard]") {
   // The heavy species' rows of the cumulant systems carry powers of λ₂ = m₂/(2T₂), ~1e6–1e8 times the gas's: before
   // the rows were equilibrated (equilibrated_solve.hpp) `granmix hcs` refused these regular systems as singular.
   // Checked: every number finite, and the first-Sonine cooling rates equal at its ratios (MG Eq. 45). Finite is not
   // right: the light gas's c₁ comes out 36.8 at 1:1e3 (first Sonine) where the heavy grains hold 80% of the energy,
-  // the expansion's breakdown, printed by the test and `granmix hcs`.
+  // the expansion's breakdown, printed by the test and `granmix hcs`; order 4 is found at 1:1e3 (T₂/T₁ 5484 against
+  // 11778 at order 3 and 43131 at order 2: the series does not settle) and refused at 1:1e4.
   for (const double m : {1e3, 1e4}) {
     const model::Mixture mix({{1, 1, 0.1}, {m, std::cbrt(m), 1e-5}});
     const auto law = model::Restitution::constant(2, 0.5);
     const auto chi = model::dilute_contact_values(2);
-    for (const int order : {2, 3}) {
+    for (const int order : {2, 3, 4}) {
+      // Order 4 at 1:1e4: the bracket in ln γ meets temperatures where its linear closure has no steady shape (a
+      // singular system for the a's): a NumericalError naming the order and the temperature ratio, exit 3.
+      if (order == 4 && m > 5e3) {
+        CHECK_THROWS_WITH(sonine_hcs(mix, law, chi, false, SonineSolver::automatic, order),
+                          Catch::Contains("Sonine moments at order 4") && Catch::Contains("T_max/T_min") && Catch::Contains("no steady shape"));
+        continue;
+      }
       const SonineHcs h = sonine_hcs(mix, law, chi, false, SonineSolver::automatic, order);
       std::printf("mass ratio %.0e, Sonine order %d: T2/T1 = %.6g, c1 = %.5g, c2 = %.5g\n", m, order, h.T[1] / h.T[0], h.c[0], h.c[1]);
       REQUIRE(std::isfinite(h.T[1] / h.T[0]));
