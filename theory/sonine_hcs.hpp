@@ -8,7 +8,8 @@
 // in ln(T_k/T_1) from the Maxwellian ratios for more. `maxwell = true` sets every c_k = 0.
 // Order 3 (beyond MG): every species also carries a₃, f_k = f_M[1 + a₂S₂ + a₃S₃], and the a's are the steady
 // ones of the ⟨c⁴⟩ and ⟨c⁶⟩ balances (sonine_moment_cooling.hpp, the level kinetic-cooling3) — the first-Sonine
-// truncation's next correction, which the γ-sweep scenes judge with.
+// truncation's next correction, which the γ-sweep scenes judge with. Order 4 adds a₄ and the ⟨c⁸⟩ balance (the level
+// kinetic-cooling4: the order-3 temperatures' next correction).
 #include <vector>
 
 #include "model/mixture.hpp"
@@ -41,7 +42,7 @@ double maxwellian_phi(double lambda, double v);
 // multiroot can be forced for two species (to check one solver against the other).
 enum class SonineSolver { automatic, multiroot };
 
-// α = restitution matrix (constant law only); χ = contact values (1 dilute); order 2 (MG's first Sonine) or 3
+// α = restitution matrix (constant law only); χ = contact values (1 dilute); order 2 (MG's first Sonine), 3 or 4
 // (not with maxwell; up to the moment table's order).
 SonineHcs sonine_hcs(const model::Mixture& mix, const model::Restitution& alpha, const std::vector<std::vector<double>>& chi,
                      bool maxwell = false, SonineSolver solver = SonineSolver::automatic, int order = 2);
