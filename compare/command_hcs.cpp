@@ -243,7 +243,7 @@ std::function<int()> add_hcs_command(CLI::App& app) {
   cmd->add_option("--alpha12", o->alpha12, "MG restitution 1-2");
   cmd->add_option("--nstar", o->nstar, "reduced density n σ12³ (Enskog χ from MG Eq. 26); 0 = dilute");
   cmd->add_flag("--json", o->json, "one JSON object on stdout");
-  cmd->add_flag("--converged", o->converged, "also the HCS without the Sonine truncation (~1-4 s for a binary)");
+  cmd->add_flag("--converged", o->converged, "also the HCS without the Sonine truncation (~0.1-1 s for a binary)");
   return [o]() { return run(*o); };
 }
 

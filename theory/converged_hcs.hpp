@@ -9,7 +9,7 @@
 // partners were given (a secant in ζ on the assembled operator: the collisions do not depend on ζ); the HCS asks
 // ζ_k = ζ_0 and the partners' a₂, a₃ equal to the solved ones: one quasi-Newton step per pass in ln(T_k/T_0) and the
 // shapes (the Maxwellian rates' Jacobian and −1 on the shapes to start, Broyden-updated). The start is the order-3
-// Sonine HCS (sonine_hcs.hpp), so the passes are few (5–7 for MG's binaries, ~0.04 s each on 2 cores; 10 for v1 Fig. 4
+// Sonine HCS (sonine_hcs.hpp), so the passes are few (5–7 for MG's binaries, ~0.01 s each on 2 cores; 10 for v1 Fig. 4
 // at n₂ = 0.01, where the light species' a₃ = −0.61).
 // What is still truncated: the partners' shapes beyond a₃ (a species sees its partners through a₂, a₃ only; its own
 // density is the grid's). `partner_a3_effect` measures that part: the same state with partners of a₂ alone.

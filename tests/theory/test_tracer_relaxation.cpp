@@ -75,6 +75,39 @@ TEST_CASE("speed grid, l = 1 harmonic: the elastic Lorentz gas's 32/(9 pi) and h
   CHECK(same - 1.0 > 0.015);  // discriminating: the first Sonine is 1
 }
 
+TEST_CASE("speed grid: the speed density's gain is exact over sigma (a cold partner: <s>, <s^3> per collision)", "[theory]") {
+  // A partner at rest (T_j → 0): every collision of a species at speed u has g = u and, for hard spheres, v′ uniform on
+  // the sphere of radius R = βu/2 about c = u(1 − β/2), so |v′| ∈ [u(1 − β), u] with density s/(2cR) and
+  // ⟨sⁿ⟩ = u^n (1 − (1 − β)^(n+2)) / ((n + 2) β (1 − β/2)). Cubic splines reproduce s and s³ (coefficients h(m − 1) and
+  // h³((m − 1)³ − (m − 1)) on the centred splines), so the operator's rows combined that way are exact:
+  //   Σ_m α_m collisions_mj = π rate (k_n − 1) ∫ N_j u^(n+1) du   (n = 1: g.u2; n = 3: g.u4),
+  // and the columns sum to zero (no mass leaves: |v′| ≤ u). |v′| is no polynomial in cos θ, so a rule over σ̂ misses
+  // these (the 12-point rule of before 2026-12-05: 1.3e-6 and 8.5e-8 relative); a wrong piece of the spline integrals by
+  // O(1) of its entries.
+  const double eps = 0.6, m_partner = 1.0, m_own = 3.0, beta = m_partner * (1.0 + eps) / (m_partner + m_own);
+  const CollisionRates r = test::constant_rates({{m_partner, 1.0, 0.1}, {m_own, 1.3, 0.05}}, eps);
+  const SpeedGridProblem p = speed_grid_pair(r, 1, 0, 1e-24, {1.0, 0.0, 0.0});
+  const std::size_t K = 40;
+  const double U = 3.0, h = U / double(K);
+  const SpeedGrid g = assemble_speed_grid(p, U, K, CollisionRule(12), SpeedGridParts::density);
+  const auto nb = g.collisions.rows();
+  Eigen::VectorXd s1(nb), s3(nb);
+  for (Eigen::Index m = 0; m < nb; ++m) {
+    const double x = double(m) - 1.0;  // spline m is centred at (m − 1)h
+    s1[m] = h * x, s3[m] = h * h * h * (x * x * x - x);
+  }
+  auto k = [&](int n) { return (1.0 - std::pow(1.0 - beta, n + 2)) / ((n + 2) * beta * (1.0 - 0.5 * beta)); };
+  const Eigen::VectorXd got1 = g.collisions.transpose() * s1, want1 = std::numbers::pi * p.rate * (k(1) - 1.0) * g.u2;
+  const Eigen::VectorXd got3 = g.collisions.transpose() * s3, want3 = std::numbers::pi * p.rate * (k(3) - 1.0) * g.u4;
+  const double err1 = (got1 - want1).cwiseAbs().maxCoeff() / want1.cwiseAbs().maxCoeff();
+  const double err3 = (got3 - want3).cwiseAbs().maxCoeff() / want3.cwiseAbs().maxCoeff();
+  const double number = g.collisions.colwise().sum().cwiseAbs().maxCoeff() / g.collisions.cwiseAbs().maxCoeff();
+  std::printf("speed grid, cold partner: <s> %.1e, <s^3> %.1e relative, number %.1e\n", err1, err3, number);
+  CHECK(err1 < 1e-10);
+  CHECK(err3 < 1e-10);
+  CHECK(number < 1e-12);
+}
+
 TEST_CASE("scaled-time motion: constant modes give the closed MSD and TAMSD of velocity_memory.hpp", "[theory]") {
   // Haff gas, τ₀ = 2/ζ: one real mode (the papers' memory) and a complex-conjugate pair beside a real one (the converged
   // level's memories have such pairs), in steps of growing length; a wrong step formula or a lost imaginary part misses
