@@ -88,8 +88,16 @@ void require_writable_folder(const std::filesystem::path& out) {
   if (!std::filesystem::is_directory(p, ec)) fail(p.string() + " is not a folder");
   if (!missing.empty() && !std::filesystem::create_directories(abs, ec) && ec) fail("cannot create the folder: " + ec.message());
   const std::filesystem::path probe = abs / (".granmix-probe-" + std::to_string(getpid()));
-  std::FILE* f = std::fopen(probe.c_str(), "wb");
-  const int err = errno;
+  // Under mpirun every rank checks --out at once, and a rank that created the folder removes it again after its probe
+  // (below): another rank's probe can then meet ENOENT (seen once in ctest under load, 2026-12-05). Create and retry.
+  std::FILE* f = nullptr;
+  int err = 0;
+  for (int attempt = 0; attempt < 8 && f == nullptr; ++attempt) {
+    if (attempt > 0) std::filesystem::create_directories(abs, ec);
+    f = std::fopen(probe.c_str(), "wb");
+    err = errno;
+    if (f == nullptr && err != ENOENT) break;
+  }
   if (f == nullptr) fail("cannot write in the folder: " + std::string(std::strerror(err)));
   const bool ok = std::fputc('x', f) != EOF && std::fflush(f) == 0;
   const bool closed = std::fclose(f) == 0;

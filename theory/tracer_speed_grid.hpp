@@ -29,16 +29,11 @@ inline constexpr double speed_grid_widths = 7.0;
 inline constexpr double speed_grid_knots = 8.0;
 inline constexpr std::size_t speed_grid_rule_points = 12;
 
-// The collision quadrature of n points in w_z (Gauss–Hermite) and |w_⊥|² (Gauss–Laguerre), n/2 in cos θ of σ̂ about ĝ
-// (Gauss–Legendre), M = 3n/4 azimuths φ_f = 2π(f + ½)/M about ĝ (σ̂ for the l = 1 harmonic and the gas's side only:
-// the speed density's gain is exact over σ̂).
+// The collision quadrature over the partner's velocity: n points in w_z (Gauss–Hermite) and |w_⊥|² (Gauss–Laguerre).
+// σ̂ needs none: every σ̂ integral of the grid is exact (sphere_gain.hpp; before 2026-12-05 a rule of n/2 points in
+// cos θ and 3n/4 azimuths).
 struct CollisionRule {
-  GaussRule wz, wp, cs;
-  std::size_t azimuths;
-  // The azimuths folded: φ and 2π − φ give the same collision but for the sign of v′_y, which enters the speeds and the
-  // gas's gains only squared — one point of weight 2 per pair (φ = π, for M odd, weight 1).
-  std::vector<double> cos_phi, phi_weight;
-  std::vector<double> sin_theta;  // √(1 − cos²θ) at the cos θ nodes
+  GaussRule wz, wp;
   explicit CollisionRule(std::size_t n);
 };
 
@@ -63,9 +58,8 @@ struct SpeedGrid {
 };
 // What to assemble: all of SpeedGrid, or the speed density's operator alone (collisions, drift, Gram matrices, mass,
 // u², u⁴, u⁶, u1 — what converged_hcs.hpp needs; collisions_p1, gain, drag and gain4 left empty and speed_moments'
-// gain, nu, gain4 NaN). The speed density's gain is exact over σ̂ (the post-collision speed's density in closed form,
-// tracer_speed_grid.cpp's sphere_gain): 1.3 ms on one core at K = 56, the 12-point rule (8.5 ms with the rule's σ̂
-// directions, before 2026-12-05); the l = 1 harmonic and the gas's side still go through the rule's σ̂ (all: 11.9 ms).
+// gain, nu, gain4 NaN). One core, K = 56, the 12-point rule: density 1.3 ms, all 2.5 ms (8.5 and 13.4 ms with a rule
+// over σ̂, before 2026-12-05).
 enum class SpeedGridParts { all, density };
 // The knot intervals on OpenMP threads, each into its own columns, summed in interval order (the same numbers for any
 // thread count).

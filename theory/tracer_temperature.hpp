@@ -12,7 +12,7 @@
 // post-collision speeds cross the knots, stays accurate). Quadratures: per knot interval 4 Gauss–Legendre points in
 // u; given u (along z) the gas's w_z by 12 Gauss–Hermite points, |w_⊥|² by 12 Gauss–Laguerre points (w in the xz
 // plane: the problem is symmetric about u), σ̂ exactly (since 2026-12-05: the post-collision speed's density in closed
-// form, tracer_speed_grid.hpp; before, 6 Gauss–Legendre points in cos θ and 9 azimuths) (`change` below says how far
+// form, sphere_gain.hpp; before, 6 Gauss–Legendre points in cos θ and 9 azimuths) (`change` below says how far
 // the rest is converged).
 // θ = T₂/T₁ = m₂⟨u²⟩/3; the grid follows it: U = 7 √(θ/m₂), step √(θ/m₂)/8, solved again until θ moves by < 1e-5.
 // Cost ~0.05–0.15 s (the knot intervals on OpenMP threads; the same numbers for any thread count).

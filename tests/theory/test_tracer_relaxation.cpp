@@ -75,36 +75,77 @@ TEST_CASE("speed grid, l = 1 harmonic: the elastic Lorentz gas's 32/(9 pi) and h
   CHECK(same - 1.0 > 0.015);  // discriminating: the first Sonine is 1
 }
 
-TEST_CASE("speed grid: the speed density's gain is exact over sigma (a cold partner: <s>, <s^3> per collision)", "[theory]") {
+namespace {
+
+// ∫ N_j(u) uⁿ du over the grid [0, Kh] for its cubic B-splines (N_j(u) = B((u/h) − j + 3), B the cardinal cubic on
+// [0, 4]) by 5-point Gauss–Legendre per knot interval (exact to degree 9), independent of the library's spline code.
+double spline_power_integral(std::size_t j, int n, double h, std::size_t K) {
+  auto B = [](double x) {
+    if (x <= 0.0 || x >= 4.0) return 0.0;
+    if (x < 1.0) return x * x * x / 6.0;
+    if (x < 2.0) return (-3.0 * x * x * x + 12.0 * x * x - 12.0 * x + 4.0) / 6.0;
+    if (x < 3.0) return (3.0 * x * x * x - 24.0 * x * x + 60.0 * x - 44.0) / 6.0;
+    return (4.0 - x) * (4.0 - x) * (4.0 - x) / 6.0;
+  };
+  const double xg[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831, 0.9061798459386640};
+  const double wg[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889, 0.4786286704993665, 0.2369268850561891};
+  double sum = 0.0;
+  for (int k = int(j) - 3; k <= int(j); ++k) {  // the knot intervals [k h, (k + 1) h] of its support
+    if (k < 0 || k >= int(K)) continue;
+    for (int q = 0; q < 5; ++q) {
+      const double x = k + 0.5 * (1.0 + xg[q]), u = x * h;
+      sum += 0.5 * wg[q] * h * B(x - double(j) + 3.0) * std::pow(u, n);
+    }
+  }
+  return sum;
+}
+
+}  // namespace
+
+TEST_CASE("speed grid: every sigma integral is exact (a cold partner: <s>, <s^3>, the l = 1 harmonic, the gas's gains)", "[theory]") {
   // A partner at rest (T_j → 0): every collision of a species at speed u has g = u and, for hard spheres, v′ uniform on
-  // the sphere of radius R = βu/2 about c = u(1 − β/2), so |v′| ∈ [u(1 − β), u] with density s/(2cR) and
-  // ⟨sⁿ⟩ = u^n (1 − (1 − β)^(n+2)) / ((n + 2) β (1 − β/2)). Cubic splines reproduce s and s³ (coefficients h(m − 1) and
-  // h³((m − 1)³ − (m − 1)) on the centred splines), so the operator's rows combined that way are exact:
-  //   Σ_m α_m collisions_mj = π rate (k_n − 1) ∫ N_j u^(n+1) du   (n = 1: g.u2; n = 3: g.u4),
-  // and the columns sum to zero (no mass leaves: |v′| ≤ u). |v′| is no polynomial in cos θ, so a rule over σ̂ misses
-  // these (the 12-point rule of before 2026-12-05: 1.3e-6 and 8.5e-8 relative); a wrong piece of the spline integrals by
-  // O(1) of its entries.
+  // the sphere of radius R = βu/2 about c = u(1 − β/2) ẑ (n uniform: v′ = c + Rn), so |v′| ∈ [u(1 − β), u] with the
+  // density s/(2cR) and ⟨sⁿ⟩ = uⁿ (1 − (1 − β)^(n+2)) / ((n + 2) β (1 − β/2)). Cubic splines reproduce s and s³
+  // (coefficients h(m − 1) and h³((m − 1)³ − (m − 1)) on splines centred at (m − 1)h), so the rows combined that way
+  // are exact, per trial function j (rate r = π n σ² χ):
+  //   density:  Σ_m α_m collisions_mj = r (k_n − 1) ∫N_j u^(n+1) du  (n = 1, 3); the columns sum to zero (|v′| ≤ u);
+  //   l = 1:    Σ_m α_m collisions_p1_mj = r ∫N_j u (⟨v′_z |v′|^(n−1)⟩ − uⁿ) du, ⟨v′_z⟩ = c, ⟨v′_z|v′|²⟩ = c(c² + R²) + 2cR²/3;
+  //   the gas (w′ = κ(ẑ − n), κ = (m_own/m_partner)R): G = r m_p κ² u, H = −r u² R, G₄ = r (16/3) κ⁴ u.
+  // |v′| is no polynomial in cos θ, so a rule over σ̂ misses the first ones (the 12-point rule of before 2026-12-05:
+  // 1.3e-6 and 8.5e-8 relative); a wrong piece of the spline integrals by O(1) of its entries.
   const double eps = 0.6, m_partner = 1.0, m_own = 3.0, beta = m_partner * (1.0 + eps) / (m_partner + m_own);
   const CollisionRates r = test::constant_rates({{m_partner, 1.0, 0.1}, {m_own, 1.3, 0.05}}, eps);
   const SpeedGridProblem p = speed_grid_pair(r, 1, 0, 1e-24, {1.0, 0.0, 0.0});
   const std::size_t K = 40;
-  const double U = 3.0, h = U / double(K);
-  const SpeedGrid g = assemble_speed_grid(p, U, K, CollisionRule(12), SpeedGridParts::density);
+  const double U = 3.0, h = U / double(K), rate = std::numbers::pi * p.rate;
+  const SpeedGrid g = assemble_speed_grid(p, U, K, CollisionRule(12), SpeedGridParts::all);
   const auto nb = g.collisions.rows();
-  Eigen::VectorXd s1(nb), s3(nb);
+  Eigen::VectorXd s1(nb), s3(nb), I2(nb), I3(nb), I4(nb), I5(nb);
   for (Eigen::Index m = 0; m < nb; ++m) {
     const double x = double(m) - 1.0;  // spline m is centred at (m − 1)h
     s1[m] = h * x, s3[m] = h * h * h * (x * x * x - x);
+    I2[m] = spline_power_integral(std::size_t(m), 2, h, K), I3[m] = spline_power_integral(std::size_t(m), 3, h, K);
+    I4[m] = spline_power_integral(std::size_t(m), 4, h, K), I5[m] = spline_power_integral(std::size_t(m), 5, h, K);
   }
   auto k = [&](int n) { return (1.0 - std::pow(1.0 - beta, n + 2)) / ((n + 2) * beta * (1.0 - 0.5 * beta)); };
-  const Eigen::VectorXd got1 = g.collisions.transpose() * s1, want1 = std::numbers::pi * p.rate * (k(1) - 1.0) * g.u2;
-  const Eigen::VectorXd got3 = g.collisions.transpose() * s3, want3 = std::numbers::pi * p.rate * (k(3) - 1.0) * g.u4;
-  const double err1 = (got1 - want1).cwiseAbs().maxCoeff() / want1.cwiseAbs().maxCoeff();
-  const double err3 = (got3 - want3).cwiseAbs().maxCoeff() / want3.cwiseAbs().maxCoeff();
+  const double c = 1.0 - 0.5 * beta, R = 0.5 * beta, kappa = m_own / m_partner * R;  // per unit u
+  auto relative = [](const Eigen::VectorXd& got, const Eigen::VectorXd& want) { return (got - want).cwiseAbs().maxCoeff() / want.cwiseAbs().maxCoeff(); };
+  const double density1 = relative(g.collisions.transpose() * s1, rate * (k(1) - 1.0) * I2);
+  const double density3 = relative(g.collisions.transpose() * s3, rate * (k(3) - 1.0) * I4);
+  const double l1_1 = relative(g.collisions_p1.transpose() * s1, rate * (c - 1.0) * I2);
+  const double l1_3 = relative(g.collisions_p1.transpose() * s3, rate * (c * (c * c + R * R) + 2.0 * c * R * R / 3.0 - 1.0) * I4);
+  const double gain = relative(g.gain, rate * m_partner * kappa * kappa * I3), drag = relative(g.drag, -rate * R * I3);
+  const double gain4 = relative(g.gain4, rate * 16.0 / 3.0 * std::pow(kappa, 4) * I5);
   const double number = g.collisions.colwise().sum().cwiseAbs().maxCoeff() / g.collisions.cwiseAbs().maxCoeff();
-  std::printf("speed grid, cold partner: <s> %.1e, <s^3> %.1e relative, number %.1e\n", err1, err3, number);
-  CHECK(err1 < 1e-10);
-  CHECK(err3 < 1e-10);
+  std::printf("speed grid, cold partner (relative): density <s> %.1e, <s^3> %.1e; l = 1 %.1e, %.1e; G %.1e, H %.1e, G4 %.1e; number %.1e\n",
+              density1, density3, l1_1, l1_3, gain, drag, gain4, number);
+  CHECK(density1 < 1e-10);
+  CHECK(density3 < 1e-10);
+  CHECK(l1_1 < 1e-10);
+  CHECK(l1_3 < 1e-10);
+  CHECK(gain < 1e-10);
+  CHECK(drag < 1e-10);
+  CHECK(gain4 < 1e-10);
   CHECK(number < 1e-12);
 }
 
