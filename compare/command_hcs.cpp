@@ -174,8 +174,8 @@ int run(const HcsOptions& o) {
     if (third) j["zeta_star_sonine3"] = third->zeta_star;
     if (grid) {
       j["zeta_star_converged"] = grid->hcs.zeta_star;
-      nlohmann::ordered_json e{{"T_ratio", grid->grid_change.T + grid->partner_a3_effect.T}};
-      const double c_error = grid->grid_change.a2 + grid->partner_a3_effect.a2;  // relative: not finite where a c is exactly 0
+      nlohmann::ordered_json e{{"T_ratio", grid->grid_change.T + grid->partner_truncation.T}};
+      const double c_error = grid->grid_change.a2 + grid->partner_truncation.a2;  // relative: not finite where a c is exactly 0
       if (std::isfinite(c_error)) e["c"] = c_error;
       j["converged_error"] = e;
       j["converged_passes"] = grid->passes;
@@ -207,7 +207,7 @@ int run(const HcsOptions& o) {
     for (std::size_t k = 0; k < mix.size(); ++k)
       std::printf("  %zu: T_ratio %.10g c %.8g a3 %.8g", k + 1, grid->hcs.T[k] / grid->hcs.T[0], grid->hcs.c[k], grid->hcs.a3[k]);
     std::printf("  zeta_star %.12g; relative error T_ratio %.2g, c %.2g (grid + partners' truncation)\n", grid->hcs.zeta_star,
-                grid->grid_change.T + grid->partner_a3_effect.T, grid->grid_change.a2 + grid->partner_a3_effect.a2);
+                grid->grid_change.T + grid->partner_truncation.T, grid->grid_change.a2 + grid->partner_truncation.a2);
   }
   if (std::isfinite(tracer.theta))
     std::printf("species 2 as a tracer in species 1, converged: T_ratio %.10g (a2 %.6g, a3 %.6g; change with a step 3/2 as long %.3g)\n",

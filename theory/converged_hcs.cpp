@@ -9,6 +9,7 @@
 #include <string>
 
 #include "model/errors.hpp"
+#include "sonine_polynomials.hpp"
 #include "tracer_speed_grid.hpp"
 
 namespace granmix::theory {
@@ -25,11 +26,15 @@ constexpr int max_passes = 60;  // v1 Fig. 4 at n2 = 0.01 (T2/T1 = 169, the ligh
 constexpr double settled_rates = 1e-8;   // |ζ_k − ζ_0| / τ_v,0⁻¹
 constexpr double settled_shapes = 1e-7;  // the largest change of any a₂, a₃ in a pass
 
+// How a species sees its partners: Maxwellians at T_j times 1 + a₂S₂ + a₃S₃ (the solve), or that plus the rest of each
+// partner's own solved density (speed_density_rest: the truncation check, whose rest follows the passes).
+enum class Partners { sonine, full };
+
 struct Settings {
   double widths;  // the grid spans U = widths √(T_k/m_k)
   double step_scale;
   const CollisionRule* rule;
-  bool partner_a3;  // partners seen with their a₃ (false: a₂ alone, the truncation check)
+  Partners partners;
   // Settled also once the residuals are this share of the first pass's (0: the absolute bounds alone). The checks'
   // variants start from the solved state, so their first residual is the size of the change they measure; at 1% it is
   // known to ~1% (the passes gain 10–30× each), one or two passes fewer than to 1e-8 (measured 2026-12-05: 17 → 12
@@ -43,11 +48,13 @@ struct State {
   double zeta0 = 0.0;  // species 0's ζ at these T (code units)
   int passes = 0;
   Eigen::MatrixXd jacobian;  // settle's quasi-Newton matrix (empty: start from the Maxwellian one)
+  std::vector<SpeedDensityRest> rest;  // Partners::full: each species' rest from the last pass (empty before the first)
 };
 
 // Species k's stationary density at the cooling rate ζ for which its temperature is the T_k its partners were given.
 struct SpeciesSolution {
   double zeta, a2, a3;
+  SpeedDensityRest rest;  // Partners::full only
 };
 
 // Why a species' grid operator can be singular, said in the mixture's terms: the partner that moves fastest against the
@@ -80,8 +87,8 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
   Eigen::MatrixXd collisions;
   SpeedGridProblem self{};
   for (std::size_t j = 0; j < mix.size(); ++j) {
-    const PartnerShape partner = set.partner_a3 ? s.shapes[j] : PartnerShape{1.0, s.shapes[j].a2, 0.0};
-    const SpeedGridProblem p = speed_grid_pair(rates, k, j, s.T[j], partner);
+    SpeedGridProblem p = speed_grid_pair(rates, k, j, s.T[j], s.shapes[j]);
+    if (set.partners == Partners::full && !s.rest.empty()) p.rest = partner_rest_nodes(s.rest[j], s.T[j]);
     SpeedGrid g = assemble_speed_grid(p, U, K, *set.rule, SpeedGridParts::density);
     if (j == 0) {
       collisions = g.collisions, grid = std::move(g), self = p;
@@ -90,8 +97,9 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
     }
   }
   // θ_k(ζ) rises with ζ (the scaling's outward drift); secant on θ_k(ζ)/T_k − 1 from the guess.
+  Eigen::VectorXd P;
   auto theta_at = [&](double zeta, SpeedMoments* m) {
-    const Eigen::VectorXd P = stationary_speed_density(collisions, grid, zeta);
+    P = stationary_speed_density(collisions, grid, zeta);
     if (P.size() == 0) throw NumericalError(singular_grid(rates, s, k));
     const SpeedMoments r = speed_moments(grid, self, P);
     if (m != nullptr) *m = r;
@@ -104,12 +112,20 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
     const double f1 = theta_at(z1, &m);
     // θ(ζ) carries the solve's rounding, ~1e-12 relative at strong dissipation (v1 Fig. 5, ε = 0.1: the secant then
     // wandered in it until it gave up); 1e-11 is far inside the passes' settled 1e-8.
-    if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu) return {z1, m.a2, m.a3};
+    if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu)
+      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid, mix[k].mass, P, m) : SpeedDensityRest{}};
     if (f1 == f0) break;
     const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
     z0 = z1, f0 = f1, z1 = z2;
   }
   throw NumericalError("converged HCS: no cooling rate gives species " + std::to_string(k) + " its temperature (secant in zeta did not settle)");
+}
+
+// The a₄ a rest carries (its S₄ moment over ⟨S₄²⟩_M = 315/128): how settle follows the rests from pass to pass.
+double rest_a4(const SpeedDensityRest& rest, double mass) {
+  double sum = 0.0;
+  for (const auto& [u, m] : rest.masses) sum += m * sonine_S4(mass * u * u / (2.0 * rest.theta));
+  return sum / (315.0 / 128.0);
 }
 
 // The Maxwellian rates' (v1 Eq. A2) Jacobian of the residuals r_k = (ξ_k − ξ_0)/ν in x_j = ln T_j (k, j ≥ 1): the
@@ -145,23 +161,41 @@ State settle(const CollisionRates& rates, State s, const Settings& set) {
   }
   Eigen::MatrixXd& J = s.jacobian;
   Eigen::VectorXd dx_prev, r_prev;
-  double stop_rates = settled_rates, stop_shapes = settled_shapes;
+  double stop_rates = settled_rates, stop_shapes = settled_shapes, stop_rest = settled_shapes;
+  // Partners::full from a state without rests: the first pass sees Sonine partners and finds the rests; the residuals
+  // that measure the change start with the second.
+  const bool full = set.partners == Partners::full;
+  const int first_measured = full && s.rest.empty() ? 2 : 1;
+  std::vector<double> a4(N, 0.0);
+  for (std::size_t k = 0; k < s.rest.size(); ++k) a4[k] = rest_a4(s.rest[k], rates.mixture()[k].mass);
   for (int pass = 1; pass <= max_passes; ++pass) {
     Eigen::VectorXd r(dim);
+    std::vector<SpeedDensityRest> rest;
+    double rest_moved = 0.0;
     for (std::size_t k = 0; k < N; ++k) {
-      const SpeciesSolution sol = solve_species(rates, k, s, set, zeta[k], nu);
+      SpeciesSolution sol = solve_species(rates, k, s, set, zeta[k], nu);
       zeta[k] = sol.zeta;
       r[Eigen::Index(n + k)] = sol.a2 - s.shapes[k].a2, r[Eigen::Index(n + N + k)] = sol.a3 - s.shapes[k].a3;
+      if (full) {
+        const double a4k = rest_a4(sol.rest, rates.mixture()[k].mass);
+        rest_moved = std::max(rest_moved, std::abs(a4k - a4[k])), a4[k] = a4k;
+        rest.push_back(std::move(sol.rest));
+      }
     }
+    if (full) s.rest = std::move(rest);  // the next pass's partners (substitution: the rests are small and follow)
     for (std::size_t k = 1; k < N; ++k) r[Eigen::Index(k - 1)] = (zeta[k] - zeta[0]) / nu;
     s.zeta0 = zeta[0], s.passes = pass;
     const double moved = r.tail(Eigen::Index(2 * N)).cwiseAbs().maxCoeff(), off = n == 0 ? 0.0 : r.head(Eigen::Index(n)).cwiseAbs().maxCoeff();
-    if (pass == 1) stop_rates = std::max(stop_rates, set.relative_stop * off), stop_shapes = std::max(stop_shapes, set.relative_stop * moved);
-    if (off < stop_rates && moved < stop_shapes) {
+    if (pass == first_measured) {
+      stop_rates = std::max(stop_rates, set.relative_stop * off), stop_shapes = std::max(stop_shapes, set.relative_stop * moved);
+      stop_rest = std::max(stop_rest, set.relative_stop * rest_moved);
+    }
+    if (pass >= first_measured && off < stop_rates && moved < stop_shapes && rest_moved <= stop_rest) {
       for (std::size_t k = 0; k < N; ++k) s.shapes[k].a2 += r[Eigen::Index(n + k)], s.shapes[k].a3 += r[Eigen::Index(n + N + k)];
       return s;
     }
-    if (dx_prev.size() != 0) J += ((r - r_prev) - J * dx_prev) * dx_prev.transpose() / dx_prev.squaredNorm();  // Broyden
+    // Broyden (not across the pass where the rests first enter: that jump in r is no response to the step)
+    if (dx_prev.size() != 0 && pass != first_measured) J += ((r - r_prev) - J * dx_prev) * dx_prev.transpose() / dx_prev.squaredNorm();
     const Eigen::VectorXd dx = -J.fullPivLu().solve(r);
     if (!dx.allFinite()) throw NumericalError("converged HCS: the quasi-Newton step is not finite");
     for (std::size_t k = 1; k < N; ++k) s.T[k] *= std::exp(dx[Eigen::Index(k - 1)]);
@@ -216,7 +250,7 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
   s.T = start.T;
   for (std::size_t k = 0; k < N; ++k) s.shapes.push_back({1.0, 0.5 * start.c[k], start.a3[k]});
   static const CollisionRule rule(speed_grid_rule_points), finer(fine_rule_points);
-  const State best = settle(rates, s, {speed_grid_widths, 1.0, &rule, true});
+  const State best = settle(rates, s, {speed_grid_widths, 1.0, &rule, Partners::sonine});
 
   ConvergedHcs out;
   static_cast<SettledHcs&>(out) = reduced(mix, best, start.beta);
@@ -229,15 +263,15 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
     // moves by 1.8% and γ by 7.5e-4, where the knots and the rule alone gave an estimate of 0.30% and 9.3e-5; its D
     // ratio by 2e-5 (measured 2026-12-05; test "kinetic-converged-hcs: …"). Over MG's mixtures (α = 0.3): γ ≤ 2e-6.
     constexpr double to_change = 1e-2;  // each variant's change to ~1% (Settings::relative_stop)
-    const State wider = settle(rates, best, {speed_grid_widths, 1.5, &rule, true, to_change});
-    const State finer_rule = settle(rates, best, {speed_grid_widths, 1.0, &finer, true, to_change});
-    const State wider_domain = settle(rates, best, {wider_domain_widths, 1.0, &rule, true, to_change});
-    const State partners_a2 = settle(rates, best, {speed_grid_widths, 1.0, &rule, false, to_change});
+    const State wider = settle(rates, best, {speed_grid_widths, 1.5, &rule, Partners::sonine, to_change});
+    const State finer_rule = settle(rates, best, {speed_grid_widths, 1.0, &finer, Partners::sonine, to_change});
+    const State wider_domain = settle(rates, best, {wider_domain_widths, 1.0, &rule, Partners::sonine, to_change});
+    const State partners_full = settle(rates, best, {speed_grid_widths, 1.0, &rule, Partners::full, to_change});
     const Change g = larger(larger(change(best, wider), change(best, finer_rule)), change(best, wider_domain));
     out.grid_change = {2.0 * g.T, 2.0 * g.a2};
-    out.partner_a3_effect = change(best, partners_a2);
+    out.partner_truncation = change(best, partners_full);
     out.grid_variants = {reduced(mix, wider, start.beta), reduced(mix, finer_rule, start.beta), reduced(mix, wider_domain, start.beta)};
-    out.partners_a2 = reduced(mix, partners_a2, start.beta);
+    out.partners_full = reduced(mix, partners_full, start.beta);
   }
   return out;
 }

@@ -12,7 +12,11 @@
 // Sonine HCS (sonine_hcs.hpp), so the passes are few (5–7 for MG's binaries, ~0.01 s each on 2 cores; 10 for v1 Fig. 4
 // at n₂ = 0.01, where the light species' a₃ = −0.61).
 // What is still truncated: the partners' shapes beyond a₃ (a species sees its partners through a₂, a₃ only; its own
-// density is the grid's). `partner_a3_effect` measures that part: the same state with partners of a₂ alone.
+// density is the grid's). `partner_truncation` computes that part: the same HCS with every partner seen through its
+// full solved density (its rest beyond the Sonine shape as signed point masses, speed_density_rest, following the
+// passes) — since 2026-12-05, stop 39; before, the estimate of partners through a₂ alone (the a₃ term's size), which
+// bounded it about twice over (v1 Fig. 4's mixture: T₂/T₁ −1.4% against 3.2% at n₂ = 0.01, −0.16% against 0.42% at
+// 0.03; its D ratio −0.99% against 2.1%).
 // Constant restitution only (a viscoelastic mixture has no settled state).
 #include <vector>
 
@@ -37,15 +41,13 @@ struct SettledHcs {
 struct ConvergedHcs : SettledHcs {
   int passes = 0;
   // Error estimates, filled only by converged_hcs(…, true): the grid (twice the largest change with knots 3/2 as far
-  // apart, with the 16-point collision rule, and with the domain 9/7 as wide), and the partners seen through a₂ alone
-  // (the size of the last partner term kept, a₃: the estimate of the a₄ … terms left out, smaller still where the
-  // series settles).
-  Change grid_change, partner_a3_effect;
+  // apart, with the 16-point collision rule, and with the domain 9/7 as wide), and the partners' truncation (the change
+  // when every partner is seen through its full solved density).
+  Change grid_change, partner_truncation;
   // The states behind them, to carry the estimates into what is computed from the HCS (a D ratio:
-  // test_converged_hcs.cpp's "[.tolerances]"): knots 3/2 apart, the 16-point rule, the wider domain; partners through
-  // a₂ alone.
+  // test_converged_hcs.cpp's "[.tolerances]"): knots 3/2 apart, the 16-point rule, the wider domain; full partners.
   std::vector<SettledHcs> grid_variants;
-  SettledHcs partners_a2;
+  SettledHcs partners_full;
 };
 
 // rates: constant restitution, χ as given. check: also compute the two error estimates (four more solves).

@@ -53,7 +53,7 @@ ConvergedRatioError converged_d_ratio_error(const CollisionRates& rates, const C
     const std::vector<double> c = changes(v);
     for (std::size_t k = 0; k < N; ++k) e.grid[k] = std::max(e.grid[k], 2.0 * c[k]);
   }
-  e.hcs_partners = changes(checked.partners_a2);
+  e.hcs_partners = changes(checked.partners_full);
   SettledHcs no_a3 = checked;  // the same HCS, its a₃ left out of the tracer problem's shapes only
   std::fill(no_a3.hcs.a3.begin(), no_a3.hcs.a3.end(), 0.0);
   e.partners = changes(no_a3);

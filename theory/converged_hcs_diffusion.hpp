@@ -16,7 +16,8 @@ std::vector<double> converged_d_ratios(const CollisionRates& rates, const Settle
 
 // The relative model error of each D_k/D_1 (species 1: 0), the sum of four computed parts, each a relative change of
 // the ratio: the HCS grid's (twice the largest change with knots 3/2 apart, the 16-point rule or the domain 9/7 as
-// wide), the HCS partners' truncation (partners through a₂ alone), the tracer problem's partners' (their a₃ left out of it: the size of the last
+// wide), the HCS partners' truncation (partners through their full solved densities
+// against a₂, a₃: converged_hcs.hpp), the tracer problem's partners' (their a₃ left out of it: the size of the last
 // shape term it keeps), its basis (one function fewer). checked: converged_hcs(rates, true).
 struct ConvergedRatioError {
   std::vector<double> grid, hcs_partners, partners, basis;  // per species

@@ -299,8 +299,9 @@ class ConvergedLevel final : public TheoryLevel {
   }
   SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ ? converged_state(rates).hcs : base_.hcs(rates); }
   // kinetic-converged-hcs: the four computed parts of its D ratios' model error (converged_hcs_diffusion.hpp). Why its
-  // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 2.1% and the tracer problem's 1.5%, at n₂ = 0.1 and 0.3
-  // all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or miss the former.
+  // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 0.99% (full partners) and the tracer problem's
+  // 1.5%, at n₂ = 0.1 and 0.3 all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or
+  // miss the former.
   bool computes_d_ratio_error() const override { return hcs_converged_; }
   // Its increments are the closed form from its own settled ratios; DSMC starts at the Maxwellian HCS (v1 Fig. 4
   // same-material, n₂ = 0.001: T₂/T₁ 82.3 against 89.3, and the heavy grain remembers it: over [50, 5000] the closed

@@ -84,6 +84,7 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
       const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
       gas.push_back({p.sd_gas * wz.x[a], p.sd_gas * std::sqrt(2.0 * wp.x[b]), wz.weight[a] * wp.weight[b] * shape * p.rate});
     }
+  for (const PartnerNode& r : p.rest) gas.push_back({r.w_z, r.w_x, r.weight * p.rate});
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
@@ -149,7 +150,7 @@ CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(gol
 SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
   const model::Mixture& mix = rates.mixture();
   const double s = mix.sigma(k, j), mj = mix[j].mass, mk = mix[k].mass;
-  return {mj, mk, std::sqrt(Tj / mj), mj * (1.0 + rates.law().eps(k, j)) / (mj + mk), mix[j].density * s * s * rates.chi(k, j), partner};
+  return {mj, mk, std::sqrt(Tj / mj), mj * (1.0 + rates.law().eps(k, j)) / (mj + mk), mix[j].density * s * s * rates.chi(k, j), partner, {}};
 }
 
 SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas) { return speed_grid_pair(rates, 1, 0, 1.0, gas); }
@@ -210,6 +211,38 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
     return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0), nan, nan, nan};
   return {theta, 0.6 * x2 / (1.5 * 1.5) - 1.0, (-x3 / 6.0 + 1.75 * x2 - 35.0 / 8.0 * 1.5 + 35.0 / 16.0) / (35.0 / 16.0),
           g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2), g.gain4.dot(P) / norm};
+}
+
+SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r) {
+  const GaussRule& uq = speed_rule();
+  const std::size_t nb = std::size_t(g.gram.rows()), K = nb - 3;
+  const double norm = g.mass.dot(P), a = m / (2.0 * r.theta), maxwell = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
+  SpeedDensityRest out{r.theta, {}};
+  double largest = 0.0;
+  for (std::size_t i = 0; i < K; ++i)
+    for (std::size_t q = 0; q < uq.x.size(); ++q) {
+      const double u = (double(i) + uq.x[q]) * g.h, x = a * u * u;
+      double density = 0.0;
+      for (std::size_t j = i; j <= i + 3; ++j) density += P[Eigen::Index(j)] * spline(u / g.h - double(j) + 3.0);
+      const double sonine = maxwell * u * u * std::exp(-x) * (1.0 + r.a2 * sonine_S2(x) + r.a3 * sonine_S3(x));
+      const double mass = (density / norm - sonine) * uq.weight[q] * g.h;
+      out.masses.push_back({u, mass}), largest = std::max(largest, std::abs(mass));
+    }
+  std::erase_if(out.masses, [&](const std::array<double, 2>& e) { return std::abs(e[1]) < 1e-8 * largest; });
+  return out;
+}
+
+std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T) {
+  static const GaussRule angles = legendre(4, -1.0, 1.0);
+  const double scale = std::sqrt(T / rest.theta);
+  std::vector<PartnerNode> nodes;
+  nodes.reserve(rest.masses.size() * angles.x.size());
+  for (const auto& [w, mass] : rest.masses)
+    for (std::size_t q = 0; q < angles.x.size(); ++q) {
+      const double mu = angles.x[q];
+      nodes.push_back({w * scale * std::sqrt(1.0 - mu * mu), w * scale * mu, mass * 0.5 * angles.weight[q]});
+    }
+  return nodes;
 }
 
 Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta) {

@@ -13,6 +13,7 @@
 // gram_u_mj = ∫ N_m N_j u du, and ⟨ΔR·c⟩ = ∫ u G du = u1·G.
 #include <Eigen/Dense>
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -37,9 +38,15 @@ struct CollisionRule {
   explicit CollisionRule(std::size_t n);
 };
 
+// A partner velocity w = (w_x, 0, w_z) with a signed weight (probability per partner): what a partner's density holds
+// beyond its Sonine shape, as point masses (converged_hcs.cpp's full partners).
+struct PartnerNode {
+  double w_x, w_z, weight;
+};
 struct SpeedGridProblem {
   double m1, m2, sd_gas, beta, rate;  // sd_gas = √(T₁/m₁), beta = m₁(1 + ε)/(m₁ + m₂), rate = n₁σ₁₂²χ₁₂
   PartnerShape gas;
+  std::vector<PartnerNode> rest;  // added to the Maxwellian times `gas` (empty: the partner is that alone)
 };
 // rates: the gas (0) and the intruder (1), constant restitution.
 SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas);
@@ -78,6 +85,21 @@ struct SpeedMoments {
   double gain4;  // the rate of the gas's Δ|w|⁴ per intruder (its fourth moment's source: the intruders reshape the gas)
 };
 SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
+
+// What a speed density P of this grid (species of mass m, its speed_moments r: θ, a₂, a₃) holds beyond the Maxwellian
+// at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at the grid's Gauss points
+// (4 per knot interval, the rule of its moments, so the masses' moments of u⁰, u², u⁴, u⁶ vanish to rounding), pruned
+// below 1e-8 of the largest (1e-6 moves nothing at five digits).
+struct SpeedDensityRest {
+  double theta = 1.0;
+  std::vector<std::array<double, 2>> masses;  // (speed, mass), ∫P = 1
+};
+SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r);
+// Those masses as a partner at temperature T (speeds scaled by √(T/θ): the shape kept), the directions of w by a
+// 4-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). The rest is
+// smooth in α: v1 Fig. 4 at n₂ = 0.01, its effect on T₂/T₁ with 4 / 6 / 8 / 12 points 1.40451 / 1.40307 / 1.40289 /
+// 1.40285% (measured 2026-12-05) — 0.1%, where converged_hcs's check needs its change to ~1%.
+std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T);
 
 // The Maxwellian speed density at θ on the grid (its L² projection).
 Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta);
