@@ -68,16 +68,15 @@ struct IntervalMoments {
 // alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
 // velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
 // velocity, so it is subtracted once per u.
-template <bool full>
-void interval(const SpeedGridProblem& p, double h, std::size_t i, const CollisionRule& rule, Eigen::Ref<Eigen::MatrixXd> coll,
-              Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
-  const GaussRule &uq = speed_rule(), &wz = rule.wz, &wp = rule.wp;
-  const std::size_t nb = std::size_t(coll.rows());
-  // The gas velocities w = (w_x, 0, w_z) and their weights (shape included) do not depend on u.
-  struct GasNode {
-    double w_z, w_x, weight;
-  };
+// The gas velocities w = (w_x, 0, w_z) and their weights (shape and rate included): the same for every u.
+struct GasNode {
+  double w_z, w_x, weight;
+};
+
+std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& rule) {
+  const GaussRule &wz = rule.wz, &wp = rule.wp;
   std::vector<GasNode> gas;
+  gas.reserve(wz.x.size() * wp.x.size() + p.rest.size());
   for (std::size_t a = 0; a < wz.x.size(); ++a)
     for (std::size_t b = 0; b < wp.x.size(); ++b) {
       const double x = 0.5 * wz.x[a] * wz.x[a] + wp.x[b];  // m₁w²/(2T₁)
@@ -85,6 +84,14 @@ void interval(const SpeedGridProblem& p, double h, std::size_t i, const Collisio
       gas.push_back({p.sd_gas * wz.x[a], p.sd_gas * std::sqrt(2.0 * wp.x[b]), wz.weight[a] * wp.weight[b] * shape * p.rate});
     }
   for (const PartnerNode& r : p.rest) gas.push_back({r.w_z, r.w_x, r.weight * p.rate});
+  return gas;
+}
+
+template <bool full>
+void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll,
+              Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
+  const GaussRule& uq = speed_rule();
+  const std::size_t nb = std::size_t(coll.rows());
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
@@ -173,13 +180,14 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
   Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K));
   Eigen::MatrixXd coll1 = full ? coll : Eigen::MatrixXd::Zero(n, 0);
   std::vector<IntervalMoments> moments(K);
+  const std::vector<GasNode> gas = gas_nodes(p, rule);
   parallel_each(K, [&](std::size_t i) {
     const auto cols = Eigen::Index(4 * i);
     auto c1 = full ? coll1.middleCols(cols, 4) : coll1.middleCols(0, 0);
     if (full)
-      interval<true>(p, h, i, rule, coll.middleCols(cols, 4), c1, moments[i]);
+      interval<true>(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
     else
-      interval<false>(p, h, i, rule, coll.middleCols(cols, 4), c1, moments[i]);
+      interval<false>(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
   });
   SpeedGrid g;
   g.h = h;
