@@ -76,7 +76,7 @@ void SphereGain::add_point(double s, double weight) {
   for (std::size_t e = 0; e < 4; ++e) gain_[j0 + e] += weight * N[e];
 }
 
-const std::vector<double>& SphereGain::finish() {
+std::vector<double>& SphereGain::finish() {
   const Moments& M = whole_interval();
   std::array<double, 3> a{};
   for (std::size_t q = 0; q < nb_; ++q) {

@@ -22,8 +22,9 @@ class SphereGain {
   void add_range(double s_lo, double s_hi, const std::array<double, 3>& W);
   // Adds weight · N_m(s): a collision whose sphere is a point (R or |c| ≈ 0).
   void add_point(double s, double weight);
-  // The gain into spline m, once the whole intervals are added (after the last add_range).
-  const std::vector<double>& finish();
+  // The gain into spline m, once the whole intervals are added (after the last add_range); the caller may subtract its
+  // loss in place (clear() starts the next speed).
+  std::vector<double>& finish();
 
  private:
   double h_;

@@ -63,11 +63,6 @@ struct IntervalMoments {
   double drift[4][4] = {}, gram[4][4] = {}, gram_u[4][4] = {};
 };
 
-// Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
-// blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
-// alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
-// velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
-// velocity, so it is subtracted once per u.
 // The gas velocities w = (w_x, 0, w_z) and their weights (shape and rate included): the same for every u.
 struct GasNode {
   double w_z, w_x, weight;
@@ -87,6 +82,11 @@ std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& r
   return gas;
 }
 
+// Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
+// blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
+// alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
+// velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
+// velocity, so it is subtracted once per u.
 template <bool full>
 void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll,
               Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
@@ -128,7 +128,8 @@ void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double
         G4 += total * (2.0 * ww * dw2 + dw2 * dw2 + 4.0 / 3.0 * kappa * kappa * (bx * bx + bz * bz));
       }
     }
-    std::vector<double> C = gain.finish(), C1 = full ? gain1.finish() : std::vector<double>{};
+    std::vector<double>& C = gain.finish();
+    std::vector<double>& C1 = gain1.finish();  // empty work when !full (no splines)
     for (std::size_t j = i; j <= i + 3; ++j) {  // the loss: every collision takes the density away from u
       const double N = lost * spline(u / h - double(j) + 3.0);
       C[j] -= N;
