@@ -297,7 +297,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid"});
     if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
@@ -428,12 +428,16 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "kinetic" && !cooling3 && !converged)
           t.fail("correction_from", "\"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"" +
                  level + "\"", "theory.level = \"kinetic-cooling3\" or \"kinetic-converged\", or correction_from = \"paper\"");
-        if ((lower == "converged" || lower == "sonine4") && level != "kinetic-converged-cooling3")
+        if ((lower == "converged" || lower == "sonine4" || lower == "grid") && level != "kinetic-converged-cooling3")
           t.fail("correction_from", "\"" + lower + "\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic-converged-cooling3\", or correction_from = \"paper\" or \"kinetic\"");
         if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
           t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
                  level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
+        // The speed-grid temperatures (level kinetic-converged-grid): constant ε, a Maxwellian start, no sweep.
+        if (lower == "grid" && (s.restitution.is_viscoelastic() || s.initial.kind == InitialState::Kind::aged || s.theory.sweep))
+          t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient, a Maxwellian "
+                 "start and no sweep", "collisions.restitution = number and initial.temperatures other than \"aged\", or correction_from = \"cooling4\"");
         // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4).
         if (lower == "cooling4" && ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
           t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 
+#include "catmull_rom.hpp"
 #include "model/errors.hpp"
 #include "parallel_each.hpp"
 
@@ -89,31 +90,12 @@ GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i,
   return out;
 }
 
-namespace {
-
-// The Catmull–Rom weights of the grid nodes around x (in grid units): nodes ⌊x⌋ − 1 … ⌊x⌋ + 2, or ⌊x⌋ alone where x is
-// a node (the own species, ρ = 1).
-struct Stencil1 {
-  long first;
-  int count;
-  double w[4];
-};
-Stencil1 stencil1(double x, const char* what) {
-  if (!std::isfinite(x)) throw NumericalError(std::string("converged velocity memory: ") + what + " not finite and positive");
-  const double f = std::floor(x), t = x - f;
-  if (t == 0.0) return {long(f), 1, {1.0, 0.0, 0.0, 0.0}};
-  return {long(f) - 1, 4,
-          {0.5 * (-t + 2.0 * t * t - t * t * t), 0.5 * (2.0 - 5.0 * t * t + 3.0 * t * t * t), 0.5 * (t + 4.0 * t * t - 3.0 * t * t * t),
-           0.5 * (-t * t + t * t * t)}};
-}
-
-}  // namespace
-
 void GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T, std::vector<std::pair<Node, double>>& out) const {
   const model::Mixture& mix = rates_.mixture();
   const double theta_k = T[k] / mix[k].mass, rho = T[i] / mix[i].mass / theta_k;
-  const Stencil1 r = stencil1(std::log(rho) / pair_grid_step, "temperature ratio");
-  const Stencil1 h = viscoelastic_ ? stencil1(std::log(theta_k) / scale_grid_step, "temperature") : Stencil1{0, 1, {1.0, 0.0, 0.0, 0.0}};
+  const CatmullRom r = catmull_rom(std::log(rho) / pair_grid_step, "converged velocity memory: temperature ratio");
+  const CatmullRom h = viscoelastic_ ? catmull_rom(std::log(theta_k) / scale_grid_step, "converged velocity memory: temperature")
+                                    : CatmullRom{0, 1, {1.0, 0.0, 0.0, 0.0}};
   for (int a = 0; a < h.count; ++a)
     for (int j = 0; j < r.count; ++j) out.push_back({{h.first + a, r.first + j}, h.w[a] * r.w[j]});
 }

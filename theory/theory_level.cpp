@@ -16,6 +16,7 @@
 #include "sonine_moment_table.hpp"
 #include "sonine_pair_terms.hpp"
 #include "sonine_tracer.hpp"
+#include "speed_grid_cooling.hpp"
 #include "galerkin_decay.hpp"
 #include "parallel_each.hpp"
 #include "tracer_diffusion_galerkin.hpp"
@@ -203,10 +204,16 @@ class ConvergedLevel final : public TheoryLevel {
   // a₃,k and ζ) instead of the Sonine one; sweeps only (model/scene.cpp). Why: under v1 Fig. 5's D ratios the Sonine HCS
   // is the gap — at the converged HCS they move by −1.3 … −2.8%, to within 0.5% of DSMC at paper fidelity
   // (docs/paper-fidelity.md; test "kinetic-converged-hcs: …").
-  explicit ConvergedLevel(int cooling_order, bool reshaped = false, bool hcs_converged = false)
-      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped), hcs_converged_(hcs_converged),
-        name_(hcs_converged ? "kinetic-converged-hcs"
-                            : std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
+  // grid: "kinetic-converged-grid", the temperatures and the species' shapes in time without the Sonine truncation (the
+  // speed grid, speed_grid_cooling.hpp; constant ε, Maxwellian starts, up to grid_species_limit species) and the HCS the
+  // converged one. Why: the judged order-3 temperatures' model error, computed against it (correction_from = "grid"):
+  // their Sonine series in time is asymptotic where a light species runs far from its partners' temperature (v1 Fig. 2's
+  // light species at t = 10: orders 2 / 3 / 4 −3.8 / 0 / −3.4%, this level −0.83%, DSMC −0.9%).
+  explicit ConvergedLevel(int cooling_order, bool reshaped = false, bool hcs_converged = false, bool grid = false)
+      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped), hcs_converged_(hcs_converged), grid_(grid),
+        name_(grid            ? "kinetic-converged-grid"
+              : hcs_converged ? "kinetic-converged-hcs"
+                              : std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
   const char* name() const override { return name_.c_str(); }
   // kinetic-converged-hcs: its sweep points' increments too in closed form, from the settled memory at the converged HCS
   // (a settled start is self-similar; the VACF history follows the Sonine temperatures and shapes in time), times the
@@ -214,6 +221,7 @@ class ConvergedLevel final : public TheoryLevel {
   MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep || hcs_converged_ ? MsdMethod::closed : MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     base_.configure(opt, rates);
+    if (grid_) opt.cooling = grid_cooling(rates);
     if (!opt.vacf) return;
     refuse_beyond_species_limit(rates);
     // The basis (x₀) from the Maxwellian settled temperatures, the same for both converged levels, so that the judged
@@ -284,6 +292,9 @@ class ConvergedLevel final : public TheoryLevel {
   // kinetic-converged-hcs: a settled start has the converged HCS's ratios, at the kinetic level's T₁ (the same time scale).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
                                            TemperatureOptions& opt) const override {
+    if (grid_ && init.kind == model::InitialState::Kind::aged)
+      throw InputError("level kinetic-converged-grid: its speed densities start Maxwellian, as DSMC's; an aged start has the settled shapes "
+                       "(allowed: initial.temperatures other than \"aged\")");
     std::vector<double> T = base_.initial_temperatures(init, rates, opt);
     if (!hcs_converged_) return T;
     // Its MSD is the settled memory's closed form: true from a settled start only (`granmix theory --level` can ask).
@@ -295,9 +306,9 @@ class ConvergedLevel final : public TheoryLevel {
     return T;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
-    return hcs_converged_ ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
+    return hcs_converged_ || grid_ ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
   }
-  SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ ? converged_state(rates).hcs : base_.hcs(rates); }
+  SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ || grid_ ? converged_state(rates).hcs : base_.hcs(rates); }
   // kinetic-converged-hcs: the four computed parts of its D ratios' model error (converged_hcs_diffusion.hpp). Why its
   // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 0.99% (full partners) and the tracer problem's
   // 1.5%, at n₂ = 0.1 and 0.3 all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or
@@ -363,6 +374,17 @@ class ConvergedLevel final : public TheoryLevel {
                            "; the limit is 10%, about m2/m1 = 400 at eps = 0.5): level = \"kinetic\" for this intruder");
     return c;
   }
+  // N² pairs' speed-grid operators along the history (three per node of ln(T_j/T_k), ~5 ms each): v1 Fig. 6's three
+  // species 259 nodes. Beyond this many species the level refuses.
+  static constexpr std::size_t grid_species_limit = 10;
+  std::shared_ptr<const CoolingModel> grid_cooling(const CollisionRates& rates) const {
+    if (rates.law().is_viscoelastic())
+      throw InputError("level " + name_ + ": the speed grid's exact sphere integrals need a constant restitution coefficient (allowed: collisions.restitution = number)");
+    if (rates.size() > grid_species_limit)
+      throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species; the speed-grid temperatures take up to " +
+                       std::to_string(grid_species_limit) + " (allowed: level = \"kinetic-converged-cooling3\" for more)");
+    return std::make_shared<SpeedGridCooling>(rates);
+  }
   void refuse_beyond_species_limit(const CollisionRates& rates) const {
     // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
     // point on 2 cores, so a 51-point sweep of 100 species takes minutes; beyond that a clear refusal, not hours.
@@ -391,7 +413,7 @@ class ConvergedLevel final : public TheoryLevel {
   }
   KineticLevel base_;
   int cooling_order_;
-  bool reshaped_, hcs_converged_;
+  bool reshaped_, hcs_converged_, grid_;
   std::string name_;
   mutable std::vector<double> memo_key_, hcs_key_;  // one level object serves one thread (scene_theory.cpp)
   mutable SettledDiffusion memo_;
@@ -412,6 +434,8 @@ std::string companion_level(const std::string& level, const std::string& correct
   // kinetic-converged) and its D at Sonine order 4 ("sonine4": kinetic-cooling3).
   if (level == "kinetic-converged-cooling3" && correction == "converged") return "kinetic-converged";
   if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
+  // Its temperatures and shapes in time without the Sonine truncation ("grid": kinetic-converged-grid).
+  if (level == "kinetic-converged-cooling3" && correction == "grid") return "kinetic-converged-grid";
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
   // The temperatures' next Sonine order: the order-3 levels' temperatures are kinetic-cooling3's (model/scene.cpp: T only).
   if (correction == "cooling4" && (level == "kinetic-cooling3" || level == "kinetic-converged-cooling3")) return "kinetic-cooling4";
@@ -432,11 +456,12 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(2, true);
   if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(3, true);
   if (name == "kinetic-converged-hcs") return std::make_unique<ConvergedLevel>(2, false, true);
+  if (name == "kinetic-converged-grid") return std::make_unique<ConvergedLevel>(3, false, false, true);
   for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid)");
 }
 
 }  // namespace granmix::theory

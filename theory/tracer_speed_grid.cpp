@@ -208,6 +208,8 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
       for (int m = 0; m < 8; ++m)
         if (integrals[m]->size() != 0) (*integrals[m])[J] += moments[i].m[c][m];
     }
+  g.edge = Eigen::VectorXd::Zero(n);
+  for (std::size_t j = K; j < nb; ++j) g.edge[Eigen::Index(j)] = spline(double(K) - double(j) + 3.0);
   return g;
 }
 

@@ -62,6 +62,10 @@ struct SpeedGrid {
   double h = 0.0;
   Eigen::MatrixXd collisions, collisions_p1, drift, gram, gram_u;
   Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1, gain4;  // u1_j = ∫N_j u du; gain4 as gain for the gas's Δ|w|⁴
+  // N_j(U): the weak form's boundary term of the drift, −U N_m(U) P(U), which the stationary solves leave out (P(U) ~
+  // e^(−24.5)) but a history must keep where the drift flows out (speed_grid_cooling.cpp: without it the Galerkin drift
+  // has growing modes at the edge, rate ∝ 1/h).
+  Eigen::VectorXd edge;
 };
 // What to assemble: all of SpeedGrid, or the speed density's operator alone (collisions, drift, Gram matrices, mass,
 // u², u⁴, u⁶, u1 — what converged_hcs.hpp needs; collisions_p1, gain, drag and gain4 left empty and speed_moments'

@@ -39,25 +39,18 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   REQUIRE(t.comments.size() == 6);
   CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
   CHECK(t.comments[1].find("sha256: ") != std::string::npos);
-  // The kinetic-converged-cooling3 level judged, the paper level beside it (issue 12), the kinetic level and the judged
-  // level's two truncations one at a time (the msd quantities' correction_from names all three), and the temperatures'
-  // next Sonine order (T's correction_from names "cooling4").
-  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper", "T_kinetic", "msd_kinetic", "T_converged",
-                                              "msd_converged", "T_sonine4", "msd_sonine4", "T_cooling4", "msd_cooling4"});
-  // D does not enter the temperatures: the level and its Sonine-D companion share them, as do the two first-Sonine
-  // levels (to the solver's tolerance; the VACF modes change CVODE's steps), while the order-3 temperatures differ from
-  // the kinetic level's by up to 4% (the light species at t ~ 10) and from the paper level's by 1–8%.
-  double cooling3 = 0.0;
-  for (std::size_t row = 3; row < t.rows.size(); row += 7) {
-    CHECK(t.at(row, "T") == Approx(t.at(row, "T_sonine4")).epsilon(1e-7));
-    CHECK(t.at(row, "T_converged") == Approx(t.at(row, "T_kinetic")).epsilon(1e-7));
-    cooling3 = std::max(cooling3, std::abs(t.at(row, "T") / t.at(row, "T_kinetic") - 1.0));
-  }
-  CHECK(cooling3 > 0.01);
-  // Order 4 moves the light species' T at t = 10 by 3.4% from order 3 (the series is asymptotic there, README).
-  double cooling4 = 0.0;
-  for (std::size_t row = 0; row < t.rows.size(); ++row) cooling4 = std::max(cooling4, std::abs(t.at(row, "T_cooling4") / t.at(row, "T") - 1.0));
-  CHECK(cooling4 > 0.03);
+  // The kinetic-converged-cooling3 level judged, the paper level beside it (issue 12), and the two companions its model
+  // errors are computed from (since 2026-12-05): the tracer problem's truncation (sonine4: D at Sonine order 4) and the
+  // temperatures' (grid: the speed-grid history, every species' density in time without the Sonine truncation).
+  CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper", "T_sonine4", "msd_sonine4", "T_grid", "msd_grid"});
+  // D does not enter the temperatures: the level and its Sonine-D companion share them (to the solver's tolerance; the
+  // VACF modes change CVODE's steps). The grid history moves the light species' T from order 3's by 0.5–1.5% in its
+  // transient (−1.09% at t = 6.3: the Sonine series in time is asymptotic there, orders 2/3/4 −3.8/0/−3.4% at t = 10).
+  double grid = 0.0;
+  for (std::size_t row = 3; row < t.rows.size(); row += 7) CHECK(t.at(row, "T") == Approx(t.at(row, "T_sonine4")).epsilon(1e-7));
+  for (std::size_t row = 0; row < t.rows.size(); ++row) grid = std::max(grid, std::abs(t.at(row, "T_grid") / t.at(row, "T") - 1.0));
+  CHECK(grid > 0.005);
+  CHECK(grid < 0.015);
   REQUIRE(t.rows.size() == 41 * 3);
   // Ballistic start: both levels start from the same state (within 0.5% at t = 0.01, where they differ
   // only in the O(νt) decay of the velocity memory); by t = 1e6 the
@@ -75,7 +68,7 @@ TEST_CASE("granmix theory --level: one level alone equals the scene run's compan
           "[compare]") {
   const Tsv scene = theory_of("bo1-fig02");
   const auto d = test::fresh_dir("theory-level");
-  for (const auto& [level, suffix] : {std::pair<std::string, std::string>{"kinetic-converged-cooling3", ""}, {"kinetic", "_kinetic"}, {"kinetic-cooling3", "_sonine4"}}) {
+  for (const auto& [level, suffix] : {std::pair<std::string, std::string>{"kinetic-converged-cooling3", ""}, {"kinetic-converged-grid", "_grid"}, {"kinetic-cooling3", "_sonine4"}}) {
     const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level " + level + " --out " + d.string());
     INFO(r.output);
     REQUIRE(r.code == 0);
@@ -91,6 +84,7 @@ TEST_CASE("granmix theory --level: one level alone equals the scene run's compan
   }
   // A level the judged one is not: kinetic-sonine3 moves the light species' long-time MSD (its last Sonine term of D).
   REQUIRE(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic-sonine3 --out " + d.string()).code == 0);
+  REQUIRE(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic --out " + d.string()).code == 0);
   const Tsv s3 = read_tsv(d / "bo1-fig02" / "theory_kinetic-sonine3.tsv");
   const Tsv k = read_tsv(d / "bo1-fig02" / "theory_kinetic.tsv");
   const std::size_t light = s3.rows.size() - 2;  // last time, species 1

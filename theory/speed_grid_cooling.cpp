@@ -1,0 +1,108 @@
+#include "speed_grid_cooling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "catmull_rom.hpp"
+#include "model/errors.hpp"
+
+namespace granmix::theory {
+
+SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_order, SpeedGridSettings grid)
+    : rates_(rates),
+      N_(rates.size()),
+      K_(std::size_t(std::ceil(grid.widths * grid.knots))),
+      nb_(K_ + 3),
+      partner_order_(partner_order),
+      step_(grid.ratio_step),
+      widths_(grid.widths),
+      rule_(grid.rule_points),
+      tables_(N_ * N_) {
+  if (rates.law().is_viscoelastic())
+    throw std::invalid_argument("speed-grid temperatures: constant restitution only (a viscoelastic eps(u) has no scale-free pair operator)");
+  if (partner_order != 2 && partner_order != 3) throw std::invalid_argument("speed-grid temperatures: partner order 2 or 3");
+  const model::Mixture& mix = rates.mixture();
+  for (std::size_t k = 0; k < N_; ++k) {
+    // The frame's own grid (drift, Gram, moments do not depend on the partner): any pair's assembly.
+    grids_.push_back(assemble_speed_grid(speed_grid_pair(rates, k, k, 1.0, {}), widths_ / std::sqrt(mix[k].mass), K_, rule_,
+                                         SpeedGridParts::density));
+    gram_.emplace_back(grids_[k].gram);
+    if (gram_[k].info() != Eigen::Success) throw NumericalError("speed-grid temperatures: the Gram matrix (Eigen LDLT) failed");
+    c2_.push_back(gram_[k].solve(grids_[k].u2));
+  }
+  a2_.resize(Eigen::Index(N_)), a3_.resize(Eigen::Index(N_));
+}
+
+const SpeedGridCooling::Sources& SpeedGridCooling::node(std::size_t k, std::size_t j, long at) const {
+  std::map<long, Sources>& table = tables_[k * N_ + j];
+  const auto found = table.find(at);
+  if (found != table.end()) return found->second;
+  const double rho = std::exp(double(at) * step_);
+  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  Sources s;
+  for (std::size_t q = 0; q < 3; ++q)
+    s[q] = assemble_speed_grid(speed_grid_pair(rates_, k, j, rho, shapes[q]), widths_ / std::sqrt(rates_.mixture()[k].mass), K_, rule_,
+                               SpeedGridParts::density)
+               .collisions;
+  ++tables_size_;
+  return table.emplace(at, std::move(s)).first->second;
+}
+
+SpeedMoments SpeedGridCooling::moments(std::size_t k, const double* z) const {
+  const Eigen::Map<const Eigen::VectorXd> P(z + k * nb_, Eigen::Index(nb_));
+  SpeedGridProblem own{};
+  own.m2 = rates_.mixture()[k].mass;
+  return speed_moments(grids_[k], own, P);
+}
+
+void SpeedGridCooling::initial_state(const double*, double rtol, double* z, double* atol) const {
+  // DSMC's start: every species Maxwellian (at its frame's T = 1). The coefficients are O(√m_k) (a density in u).
+  for (std::size_t k = 0; k < N_; ++k) {
+    const Eigen::VectorXd P = maxwellian_speed_density(grids_[k], rates_.mixture()[k].mass, 1.0);
+    const double scale = P.cwiseAbs().maxCoeff();
+    for (std::size_t i = 0; i < nb_; ++i) z[k * nb_ + i] = P[Eigen::Index(i)], atol[k * nb_ + i] = rtol * scale;
+  }
+}
+
+void SpeedGridCooling::rates(const double* T, const double* z, double* xi, double* dz_dt) const {
+  for (std::size_t j = 0; j < N_; ++j) {
+    const SpeedMoments m = moments(j, z);
+    a2_[Eigen::Index(j)] = m.a2, a3_[Eigen::Index(j)] = partner_order_ == 3 ? m.a3 : 0.0;
+  }
+  for (std::size_t k = 0; k < N_; ++k) {
+    const Eigen::Map<const Eigen::VectorXd> P(z + k * nb_, Eigen::Index(nb_));
+    work_.setZero(Eigen::Index(nb_));
+    for (std::size_t j = 0; j < N_; ++j) {
+      const CatmullRom r = catmull_rom(std::log(T[j] / T[k]) / step_, "speed-grid temperatures: temperature ratio");
+      const double shape[3] = {1.0, a2_[Eigen::Index(j)], a3_[Eigen::Index(j)]};
+      for (int n = 0; n < r.count; ++n) {
+        const Sources& s = node(k, j, r.first + n);
+        for (std::size_t q = 0; q < 3; ++q)
+          if (shape[q] != 0.0) work_.noalias() += (r.w[n] * shape[q]) * (s[q] * P);
+      }
+    }
+    const double scale = std::sqrt(T[k]);
+    Eigen::VectorXd drift = grids_[k].drift * P;
+    xi[k] = -2.0 * scale * c2_[k].dot(work_) / c2_[k].dot(drift);
+    if (xi[k] > 0.0) {  // the drift flows out at U: its boundary term (upwind; tracer_speed_grid.hpp SpeedGrid::edge)
+      drift -= (widths_ / std::sqrt(rates_.mixture()[k].mass) * grids_[k].edge.dot(P)) * grids_[k].edge;
+      xi[k] = -2.0 * scale * c2_[k].dot(work_) / c2_[k].dot(drift);
+    }
+    if (dz_dt == nullptr) continue;
+    const Eigen::VectorXd rhs = scale * work_ + 0.5 * xi[k] * drift;
+    Eigen::Map<Eigen::VectorXd>(dz_dt + k * nb_, Eigen::Index(nb_)) = gram_[k].solve(rhs);
+  }
+}
+
+bool SpeedGridCooling::cumulants(const double*, const double* z, double* c) const {
+  for (std::size_t k = 0; k < N_; ++k) c[k] = 2.0 * moments(k, z).a2;
+  return true;
+}
+
+bool SpeedGridCooling::third_sonine(const double* z, double* a3) const {
+  for (std::size_t k = 0; k < N_; ++k) a3[k] = moments(k, z).a3;
+  return true;
+}
+
+}  // namespace granmix::theory
