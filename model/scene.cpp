@@ -190,7 +190,7 @@ Observables read_observables(TomlFields& f) {
 
 TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   TheorySettings s;
-  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3", "kinetic-converged-hcs"},
+  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3", "kinetic-converged-hcs", "kinetic-converged-grid"},
                      "paper");
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
@@ -230,6 +230,12 @@ void check_combinations(const Scene& s, TomlFields& top) {
   if (s.theory.level == "kinetic-converged-hcs" && !s.theory.sweep)
     top.fail("theory", "level \"kinetic-converged-hcs\" is the settled state of a sweep (the converged HCS has no history in time)",
              "theory.sweep with level = \"kinetic-converged-hcs\", or level = \"kinetic-converged\"");
+  // The speed-grid history (theory/speed_grid_cooling.hpp) starts from DSMC's Maxwellian densities with a constant ε.
+  if (s.theory.level.starts_with("kinetic-converged-grid") &&
+      (s.restitution.is_viscoelastic() || s.initial.kind == InitialState::Kind::aged || s.theory.sweep || s.theory.tracer))
+    top.fail("theory", "level \"" + s.theory.level + "\" integrates every species' density from a Maxwellian start, which needs a constant restitution "
+             "coefficient, a history (no sweep, no tracer form) and a start other than \"aged\"",
+             "collisions.restitution = number without sweep or tracer, or level = \"kinetic-converged-cooling3\"");
   if (s.theory.level.starts_with("kinetic-converged") && s.theory.sweep && s.restitution.is_viscoelastic())
     top.fail("theory", "level \"" + s.theory.level + "\" settles its memory for a sweep, which needs a constant restitution coefficient",
              "collisions.restitution = number");
@@ -297,7 +303,7 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis"});
     if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
@@ -434,6 +440,9 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
           t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
                  level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
+        if ((lower == "a2" || lower == "basis") && level != "kinetic-converged-grid")
+          t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
+                 "theory.level = \"kinetic-converged-grid\", or correction_from = \"paper\"");
         // The speed-grid temperatures (level kinetic-converged-grid): constant ε, a Maxwellian start, no sweep.
         if (lower == "grid" && (s.restitution.is_viscoelastic() || s.initial.kind == InitialState::Kind::aged || s.theory.sweep))
           t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient, a Maxwellian "

@@ -389,7 +389,7 @@ TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairT
     SolverStats paper_stats;
     append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
   }
-  for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid"})  // the other levels a model error is measured from
+  for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis"})  // the other levels a model error is measured from
     if (corrected_from(s, correction)) {
       SolverStats companion_stats;
       append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats, tables),

@@ -7,7 +7,7 @@
 // 4.0% there (the larger of its last and next corrections) that no further order removes.
 //
 // Species k's density P_k(u) lives in its own frame, velocities scaled by √(1/T_k(t)) so that its temperature there is
-// 1 (U = speed_grid_history_widths/√m_k, speed_grid_knots per width, the 12-point collision rule). In that frame partner j is at
+// 1 (U = speed_grid_history_widths/√m_k, speed_grid_history_knots per width, the 12-point collision rule). In that frame partner j is at
 // the temperature ρ = T_j/T_k, and the real collisions run √T_k as fast as the frame's (hard spheres: the rate scales
 // with the relative speed). The frame shrinks as T_k falls, an outward drift at ξ_k/2 (the HCS's ζ/2 term), so
 //   gram dP_k/dt = [√T_k Σ_j C_kj(ρ; a₂,j, a₃,j) + (ξ_k/2) drift] P_k,     d ln T_k/dt = −ξ_k,
@@ -42,11 +42,15 @@ inline constexpr double speed_grid_ratio_step = 0.0625;
 // times the Maxwellian's), whose mass leaves a 7-width domain (1.7e-4 of the light species' by t = 1e3) and moves its T
 // by up to 4.5e-4; at 9 widths the tail left is 1.5e-6 and 11 widths move T by ≤ 6e-6 (measured 2026-12-05).
 inline constexpr double speed_grid_history_widths = 9.0;
+// Knots per thermal width of the history's grid: fewer than the stationary solves' 8, since the history's cost grows as
+// (knots)³ (CVODE's dense Jacobian of all the species' splines) and its temperatures do not need them: from 5 to 8
+// knots v1 Fig. 6's move by ≤ 2.2e-7, from 5 to 4 by ≤ 2.4e-6, from 8 to 12 by ≤ 1e-7 (2026-12-05); 1.8 → 0.6 s.
+inline constexpr double speed_grid_history_knots = 5.0;
 
-// The grid (defaults: the history's domain, the stationary solves' knots and collision rule); the error estimate's
+// The grid (defaults: the history's domain and knots, the stationary solves' collision rule); the error estimate's
 // variants change it.
 struct SpeedGridSettings {
-  double widths = speed_grid_history_widths, knots = speed_grid_knots, ratio_step = speed_grid_ratio_step;
+  double widths = speed_grid_history_widths, knots = speed_grid_history_knots, ratio_step = speed_grid_ratio_step;
   std::size_t rule_points = speed_grid_rule_points;
 };
 

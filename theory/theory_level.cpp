@@ -183,6 +183,29 @@ class HcsConvergedLevel final : public TheoryLevel {
   KineticLevel base_{kinetic_sonine_order};
 };
 
+// kinetic-converged-grid's basis companion: the tracer problem with this many functions (the level's 8). v1 Fig. 2's
+// MSDs move by ≤ 4.2e-4 from 8 to 10 functions (1.0e-4 from 8 to 7; measured 2026-12-05).
+constexpr std::size_t grid_companion_basis = 10;
+
+// A velocity decay given the species' a₂ alone (its a₃ withheld: in the tracer's source and in its partners), for
+// kinetic-converged-grid-a2, the companion that measures the a₃ term's size.
+class WithoutThirdSonine final : public VelocityDecay {
+ public:
+  explicit WithoutThirdSonine(std::shared_ptr<const VelocityDecay> decay) : decay_(std::move(decay)) {}
+  void rates(const double* T, const double* xi, double* nu) const override { decay_->rates(T, xi, nu); }
+  std::size_t modes() const override { return decay_->modes(); }
+  bool uses_sonine_coefficients() const override { return decay_->uses_sonine_coefficients(); }
+  void correlation_rates(const CollisionRates& r, const double* T, const double* xi, const double* Q, double* dQ, double* nu, const double* a2,
+                         const double*) const override {
+    decay_->correlation_rates(r, T, xi, Q, dQ, nu, a2, nullptr);
+  }
+  bool offers_correlation_jacobian() const override { return decay_->offers_correlation_jacobian(); }
+  void correlation_jacobian_times(const double* v, double* Jv) const override { decay_->correlation_jacobian_times(v, Jv); }
+
+ private:
+  std::shared_ptr<const VelocityDecay> decay_;
+};
+
 // "kinetic-converged" (cooling_order 2) and "kinetic-converged-cooling3" (3): the kinetic level with the tracer problem
 // solved without the Sonine truncation (tracer_diffusion_galerkin.hpp): the species' own a's in its velocity
 // distribution, the partners' in the collision operator, the level's cooling rate ζ_k in the scaling term.
@@ -198,37 +221,46 @@ class HcsConvergedLevel final : public TheoryLevel {
 class ConvergedLevel final : public TheoryLevel {
  public:
   static constexpr std::size_t converged_species_limit = 100;
-  // reshaped: the tracer form with the gas's reshaping by the intruders (RelaxationOptions::gas_shape), the companion
-  // that measures that left-out effect; otherwise the same level.
-  // hcs_converged: "kinetic-converged-hcs", the tracer problem at the converged HCS (converged_hcs.hpp: its T_k, a₂,k,
-  // a₃,k and ζ) instead of the Sonine one; sweeps only (model/scene.cpp). Why: under v1 Fig. 5's D ratios the Sonine HCS
-  // is the gap — at the converged HCS they move by −1.3 … −2.8%, to within 0.5% of DSMC at paper fidelity
-  // (docs/paper-fidelity.md; test "kinetic-converged-hcs: …").
-  // grid: "kinetic-converged-grid", the temperatures and the species' shapes in time without the Sonine truncation (the
-  // speed grid, speed_grid_cooling.hpp; constant ε, Maxwellian starts, up to grid_species_limit species) and the HCS the
-  // converged one. Why: the judged order-3 temperatures' model error, computed against it (correction_from = "grid"):
-  // their Sonine series in time is asymptotic where a light species runs far from its partners' temperature (v1 Fig. 2's
-  // light species at t = 10: orders 2 / 3 / 4 −3.8 / 0 / −3.4%, this level −0.83%, DSMC −0.9%).
-  explicit ConvergedLevel(int cooling_order, bool reshaped = false, bool hcs_converged = false, bool grid = false)
-      : base_(kinetic_sonine_order, cooling_order), cooling_order_(cooling_order), reshaped_(reshaped), hcs_converged_(hcs_converged), grid_(grid),
-        name_(grid            ? "kinetic-converged-grid"
-              : hcs_converged ? "kinetic-converged-hcs"
-                              : std::string(cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (reshaped ? "-reshaped" : "")) {}
+  struct Variant {
+    int cooling_order = 2;
+    // The tracer form with the gas's reshaping by the intruders (RelaxationOptions::gas_shape), the companion that
+    // measures that left-out effect; otherwise the same level.
+    bool reshaped = false;
+    // "kinetic-converged-hcs", the tracer problem at the converged HCS (converged_hcs.hpp: its T_k, a₂,k, a₃,k and ζ)
+    // instead of the Sonine one; sweeps only (model/scene.cpp). Why: under v1 Fig. 5's D ratios the Sonine HCS is the
+    // gap — at the converged HCS they move by −1.3 … −2.8%, to within 0.5% of DSMC at paper fidelity
+    // (docs/paper-fidelity.md; test "kinetic-converged-hcs: …").
+    bool hcs_converged = false;
+    // "kinetic-converged-grid": the temperatures and the species' shapes in time without the Sonine truncation (the
+    // speed grid, speed_grid_cooling.hpp; constant ε, Maxwellian starts, up to grid_species_limit species), the HCS the
+    // converged one. Why: in time the Sonine series is asymptotic where a light species runs far from its partners'
+    // temperature (v1 Fig. 2's light species at t = 10: orders 2 / 3 / 4 −3.8 / 0 / −3.4% from order 3); on the grid
+    // v1 Fig. 2's light T and v1 Fig. 6's light MSD lie within 0.1–0.2% of paper-fidelity DSMC at every time (README).
+    bool grid = false;
+    // Its companions, the computed parts of its model error: every shape seen through a₂ alone (the partners in the
+    // temperatures and in the tracer problem, the species' own in the tracer's source: the a₃ term's size), and the
+    // tracer problem's basis of `basis` functions.
+    bool a2_only = false;
+    std::size_t basis = converged_diffusion_basis;
+  };
+  explicit ConvergedLevel(Variant v) : base_(kinetic_sonine_order, v.cooling_order), v_(v), name_(level_name(v)) {}
   const char* name() const override { return name_.c_str(); }
   // kinetic-converged-hcs: its sweep points' increments too in closed form, from the settled memory at the converged HCS
   // (a settled start is self-similar; the VACF history follows the Sonine temperatures and shapes in time), times the
   // effect of DSMC's unsettled start (start_companion below).
-  MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep || hcs_converged_ ? MsdMethod::closed : MsdMethod::vacf; }
+  MsdMethod msd_method(const model::Scene& s) const override { return s.theory.sweep || v_.hcs_converged ? MsdMethod::closed : MsdMethod::vacf; }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override {
     base_.configure(opt, rates);
-    if (grid_) opt.cooling = grid_cooling(rates);
+    if (v_.grid) opt.cooling = grid_cooling(rates);
     if (!opt.vacf) return;
     refuse_beyond_species_limit(rates);
     // The basis (x₀) from the Maxwellian settled temperatures, the same for both converged levels, so that the judged
     // level and its `converged` companion share their pair tables (opt.galerkin_tables). The basis is a numerical
     // choice: each level's own settled temperatures (before 2026-12-03) give MSDs within 9.4e-5 (bo1-fig03-aged), v1
     // Fig. 8's near-critical k = 40–43 within 1.7e-3 (its basis sensitivity: ~1% across 6–9 functions, README).
-    opt.decay = std::make_shared<GalerkinDecay>(rates, theory::settled_temperatures(rates).T, converged_diffusion_basis, opt.galerkin_tables);
+    std::shared_ptr<const VelocityDecay> decay =
+        std::make_shared<GalerkinDecay>(rates, theory::settled_temperatures(rates).T, v_.basis, opt.galerkin_tables);
+    opt.decay = v_.a2_only ? std::make_shared<WithoutThirdSonine>(std::move(decay)) : decay;
   }
   // At settled temperature ratios (T sets the scale): the level's steady shape and cooling rates at T.
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
@@ -244,12 +276,12 @@ class ConvergedLevel final : public TheoryLevel {
     if (key == memo_key_) return memo_;
     const std::size_t N = rates.size();
     std::vector<double> a2(N, 0.0), a3(N, 0.0), xi(N);
-    if (hcs_converged_) {
+    if (v_.hcs_converged) {
       // The converged HCS at T's scale: every ζ_k the one ζ, ∝ √T (hard spheres, constant ε).
       const ConvergedHcs& c = converged_state(rates);
       const double zeta = c.zeta * std::sqrt(T[0] / c.hcs.T[0]);
       for (std::size_t k = 0; k < N; ++k) a2[k] = 0.5 * c.hcs.c[k], a3[k] = c.hcs.a3[k], xi[k] = zeta;
-    } else if (sonine_applies(rates) && third_sonine_applies(rates, cooling_order_)) {
+    } else if (sonine_applies(rates) && third_sonine_applies(rates, v_.cooling_order)) {
       const SonineMomentCooling m(rates, 3, {}, make_sonine_pair_terms(rates.law()));
       const std::vector<double> z = m.steady_state(T.data());
       std::vector<double> dz(z.size());
@@ -292,11 +324,11 @@ class ConvergedLevel final : public TheoryLevel {
   // kinetic-converged-hcs: a settled start has the converged HCS's ratios, at the kinetic level's T₁ (the same time scale).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
                                            TemperatureOptions& opt) const override {
-    if (grid_ && init.kind == model::InitialState::Kind::aged)
-      throw InputError("level kinetic-converged-grid: its speed densities start Maxwellian, as DSMC's; an aged start has the settled shapes "
+    if (v_.grid && init.kind == model::InitialState::Kind::aged)
+      throw InputError("level " + name_ + ": its speed densities start Maxwellian, as DSMC's; an aged start has the settled shapes "
                        "(allowed: initial.temperatures other than \"aged\")");
     std::vector<double> T = base_.initial_temperatures(init, rates, opt);
-    if (!hcs_converged_) return T;
+    if (!v_.hcs_converged) return T;
     // Its MSD is the settled memory's closed form: true from a settled start only (`granmix theory --level` can ask).
     if (init.kind != model::InitialState::Kind::hcs)
       throw InputError("level kinetic-converged-hcs: its MSD is the settled state's, so the start must be settled (allowed: initial.temperatures = \"hcs\", or a sweep)");
@@ -306,14 +338,14 @@ class ConvergedLevel final : public TheoryLevel {
     return T;
   }
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
-    return hcs_converged_ || grid_ ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
+    return v_.hcs_converged || v_.grid ? converged_state(rates).hcs.T : base_.settled_temperatures(rates);
   }
-  SonineHcs hcs(const CollisionRates& rates) const override { return hcs_converged_ || grid_ ? converged_state(rates).hcs : base_.hcs(rates); }
+  SonineHcs hcs(const CollisionRates& rates) const override { return v_.hcs_converged || v_.grid ? converged_state(rates).hcs : base_.hcs(rates); }
   // kinetic-converged-hcs: the four computed parts of its D ratios' model error (converged_hcs_diffusion.hpp). Why its
   // own: at v1 Fig. 4's n₂ = 0.01 the HCS partners' truncation is 0.99% (full partners) and the tracer problem's
   // 1.5%, at n₂ = 0.1 and 0.3 all four parts sum to 3e-4 — one `relative` per scene would either widen the latter or
   // miss the former.
-  bool computes_d_ratio_error() const override { return hcs_converged_; }
+  bool computes_d_ratio_error() const override { return v_.hcs_converged; }
   // Its increments are the closed form from its own settled ratios; DSMC starts at the Maxwellian HCS (v1 Fig. 4
   // same-material, n₂ = 0.001: T₂/T₁ 82.3 against 89.3, and the heavy grain remembers it: over [50, 5000] the closed
   // form was 1.0% above DSMC's 18 + 18 seeds and bo2-fig02's 20). kinetic-converged-cooling3's VACF history from both
@@ -321,11 +353,11 @@ class ConvergedLevel final : public TheoryLevel {
   // Sonine temperatures in time) against it — 0.16% there, 0.20% at v1 Fig. 4's n₂ = 0.01, 0.18% at v1 Fig. 5
   // equal-sizes' ε = 0.2, ≤ 0.012% at the other DSMC points of the five sweeps (measured 2026-12-05).
   StartCompanions start_companion() const override {
-    if (!hcs_converged_) return {};
+    if (!v_.hcs_converged) return {};
     return {"kinetic-converged-cooling3", "kinetic-converged"};
   }
   std::vector<double> d_ratio_error(const CollisionRates& rates) const override {
-    if (!hcs_converged_) return TheoryLevel::d_ratio_error(rates);
+    if (!v_.hcs_converged) return TheoryLevel::d_ratio_error(rates);
     return converged_d_ratio_error(rates, converged_state(rates, true)).total();
   }
   // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
@@ -342,7 +374,7 @@ class ConvergedLevel final : public TheoryLevel {
     const CollisionRates alone(model::Mixture({gas}), model::Restitution::constant(1, rates.law().eps(0, 0)), {{rates.chi(0, 0)}});
     const SettledDiffusion d = diffusion_at(alone, {1.0});
     RelaxationOptions opt;
-    opt.gas_shape = reshaped_;
+    opt.gas_shape = v_.reshaped;
     return relaxing_tracer_form(rates, d.memory_of(0), 2.0 / d.tau0, t.theta, t_end, opt);
   }
 
@@ -383,7 +415,7 @@ class ConvergedLevel final : public TheoryLevel {
     if (rates.size() > grid_species_limit)
       throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species; the speed-grid temperatures take up to " +
                        std::to_string(grid_species_limit) + " (allowed: level = \"kinetic-converged-cooling3\" for more)");
-    return std::make_shared<SpeedGridCooling>(rates);
+    return std::make_shared<SpeedGridCooling>(rates, v_.a2_only ? 2 : 3);
   }
   void refuse_beyond_species_limit(const CollisionRates& rates) const {
     // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
@@ -411,9 +443,15 @@ class ConvergedLevel final : public TheoryLevel {
     if (key != hcs_key_ || (check && !checked)) hcs_memo_ = converged_hcs(rates, check), hcs_key_ = std::move(key);
     return hcs_memo_;
   }
+  static std::string level_name(const Variant& v) {
+    if (v.hcs_converged) return "kinetic-converged-hcs";
+    if (v.grid)
+      return std::string("kinetic-converged-grid") + (v.a2_only ? "-a2" : "") +
+             (v.basis != converged_diffusion_basis ? "-basis" + std::to_string(v.basis) : "");
+    return std::string(v.cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (v.reshaped ? "-reshaped" : "");
+  }
   KineticLevel base_;
-  int cooling_order_;
-  bool reshaped_, hcs_converged_, grid_;
+  Variant v_;
   std::string name_;
   mutable std::vector<double> memo_key_, hcs_key_;  // one level object serves one thread (scene_theory.cpp)
   mutable SettledDiffusion memo_;
@@ -436,6 +474,9 @@ std::string companion_level(const std::string& level, const std::string& correct
   if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
   // Its temperatures and shapes in time without the Sonine truncation ("grid": kinetic-converged-grid).
   if (level == "kinetic-converged-cooling3" && correction == "grid") return "kinetic-converged-grid";
+  // kinetic-converged-grid's computed parts: every shape through a₂ alone ("a2"), the tracer problem's basis ("basis").
+  if (level == "kinetic-converged-grid" && correction == "a2") return "kinetic-converged-grid-a2";
+  if (level == "kinetic-converged-grid" && correction == "basis") return "kinetic-converged-grid-basis" + std::to_string(grid_companion_basis);
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
   // The temperatures' next Sonine order: the order-3 levels' temperatures are kinetic-cooling3's (model/scene.cpp: T only).
   if (correction == "cooling4" && (level == "kinetic-cooling3" || level == "kinetic-converged-cooling3")) return "kinetic-cooling4";
@@ -451,17 +492,21 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
   if (name == "kinetic-cooling4") return std::make_unique<KineticLevel>(kinetic_sonine_order, 4);
   if (name == "kinetic-hcs-converged") return std::make_unique<HcsConvergedLevel>();
-  if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(2);
-  if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(3);
-  if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(2, true);
-  if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(3, true);
-  if (name == "kinetic-converged-hcs") return std::make_unique<ConvergedLevel>(2, false, true);
-  if (name == "kinetic-converged-grid") return std::make_unique<ConvergedLevel>(3, false, false, true);
+  using Variant = ConvergedLevel::Variant;
+  if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(Variant{});
+  if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3});
+  if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(Variant{.reshaped = true});
+  if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .reshaped = true});
+  if (name == "kinetic-converged-hcs") return std::make_unique<ConvergedLevel>(Variant{.hcs_converged = true});
+  if (name == "kinetic-converged-grid") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true});
+  if (name == "kinetic-converged-grid-a2") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true, .a2_only = true});
+  if (name == "kinetic-converged-grid-basis" + std::to_string(grid_companion_basis))
+    return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true, .basis = grid_companion_basis});
   for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid, kinetic-converged-grid-a2, kinetic-converged-grid-basis10)");
 }
 
 }  // namespace granmix::theory
