@@ -230,11 +230,10 @@ void check_combinations(const Scene& s, TomlFields& top) {
   if (s.theory.level == "kinetic-converged-hcs" && !s.theory.sweep)
     top.fail("theory", "level \"kinetic-converged-hcs\" is the settled state of a sweep (the converged HCS has no history in time)",
              "theory.sweep with level = \"kinetic-converged-hcs\", or level = \"kinetic-converged\"");
-  // The speed-grid history (theory/speed_grid_cooling.hpp) starts from DSMC's Maxwellian densities with a constant ε.
-  if (s.theory.level.starts_with("kinetic-converged-grid") &&
-      (s.restitution.is_viscoelastic() || s.initial.kind == InitialState::Kind::aged || s.theory.sweep || s.theory.tracer))
-    top.fail("theory", "level \"" + s.theory.level + "\" integrates every species' density from a Maxwellian start, which needs a constant restitution "
-             "coefficient, a history (no sweep, no tracer form) and a start other than \"aged\"",
+  // The speed-grid history (theory/speed_grid_cooling.hpp) integrates every species' density with a constant ε.
+  if (s.theory.level.starts_with("kinetic-converged-grid") && (s.restitution.is_viscoelastic() || s.theory.sweep || s.theory.tracer))
+    top.fail("theory", "level \"" + s.theory.level + "\" integrates every species' density in time, which needs a constant restitution "
+             "coefficient and a history (no sweep, no tracer form)",
              "collisions.restitution = number without sweep or tracer, or level = \"kinetic-converged-cooling3\"");
   if (s.theory.level.starts_with("kinetic-converged") && s.theory.sweep && s.restitution.is_viscoelastic())
     top.fail("theory", "level \"" + s.theory.level + "\" settles its memory for a sweep, which needs a constant restitution coefficient",
@@ -443,10 +442,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if ((lower == "a2" || lower == "basis") && level != "kinetic-converged-grid")
           t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic-converged-grid\", or correction_from = \"paper\"");
-        // The speed-grid temperatures (level kinetic-converged-grid): constant ε, a Maxwellian start, no sweep.
-        if (lower == "grid" && (s.restitution.is_viscoelastic() || s.initial.kind == InitialState::Kind::aged || s.theory.sweep))
-          t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient, a Maxwellian "
-                 "start and no sweep", "collisions.restitution = number and initial.temperatures other than \"aged\", or correction_from = \"cooling4\"");
+        // The speed-grid temperatures (level kinetic-converged-grid): constant ε, no sweep.
+        if (lower == "grid" && (s.restitution.is_viscoelastic() || s.theory.sweep))
+          t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient and no sweep",
+                 "collisions.restitution = number, or correction_from = \"cooling4\"");
         // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4).
         if (lower == "cooling4" && ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
           t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +

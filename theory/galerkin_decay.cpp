@@ -198,7 +198,8 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
   const std::size_t N = rates_.size();
   prefetch(T);
   // The species on OpenMP threads, each wholly on one (its operator reads the tables, ~N·4 nodes of 3 kept² entries:
-  // memory-bound, 2 s of v1 Fig. 8's 43 species on one thread).
+  // memory-bound, 2 s of v1 Fig. 8's 43 species on one thread); a few species on the calling thread (v1 Fig. 3-aged's
+  // two: 51 s against 3 s on a loaded machine, the other thread spinning at every right-hand side's join).
   parallel_each(N, [&](std::size_t k) {
     const Species& sp = species_[k];
     const double theta = T[k] / rates_.mixture()[k].mass;
@@ -222,7 +223,7 @@ void GalerkinDecay::correlation_rates(const CollisionRates&, const double* T, co
     du += 2.0 * theta * (sp.s[0] + (a2 ? a2[k] : 0.0) * sp.s[1] + (a3 ? a3[k] : 0.0) * sp.s[2]);
     for (Eigen::Index p = 0; p < n; ++p) dQ[std::size_t(p) * N + k] = du[p];
     for (std::size_t p = sp.kept; p < size_; ++p) dQ[p * N + k] = 0.0;  // unknowns beyond the kept span stay 0
-  });
+  }, N >= parallel_species);
 }
 
 void GalerkinDecay::correlation_jacobian_times(const double* v, double* Jv) const {

@@ -55,6 +55,9 @@ inline constexpr double scale_grid_step = 2.0;
 // light species (tests/theory/test_galerkin_decay.cpp). v1 Fig. 8: ~3/4 of its pairs; its MSDs move ≤ 5.5e-6, the
 // whole-scene theory 20.7 → 14.5 s (9.5 s with the 40 × 24 rule of tracer_diffusion_galerkin.hpp).
 inline constexpr double coarse_pair_share = 1e-3;
+// From this many species a right-hand side assembles the species' operators on OpenMP threads (fewer: on the calling
+// thread, whose work per right-hand side, ~N²·4·3·kept² entries, is smaller than a fork and join).
+inline constexpr std::size_t parallel_species = 8;
 
 // The pair tables of GalerkinDecay, kept apart from it so that the levels of one scene that solve the same Galerkin
 // problem (the judged kinetic-converged-cooling3 and its `converged` companion, kinetic-converged: the same mixture and

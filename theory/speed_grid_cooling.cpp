@@ -9,7 +9,7 @@
 
 namespace granmix::theory {
 
-SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_order, SpeedGridSettings grid)
+SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_order, SpeedGridSettings grid, std::vector<double> z0)
     : rates_(rates),
       N_(rates.size()),
       K_(std::size_t(std::ceil(grid.widths * grid.knots))),
@@ -32,6 +32,8 @@ SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_orde
     c2_.push_back(gram_[k].solve(grids_[k].u2));
   }
   a2_.resize(Eigen::Index(N_)), a3_.resize(Eigen::Index(N_));
+  if (!z0.empty() && z0.size() != state_size()) throw std::invalid_argument("speed-grid temperatures: the start has the wrong number of spline coefficients");
+  z0_ = std::move(z0);
 }
 
 const SpeedGridCooling::Sources& SpeedGridCooling::node(std::size_t k, std::size_t j, long at) const {
@@ -57,11 +59,13 @@ SpeedMoments SpeedGridCooling::moments(std::size_t k, const double* z) const {
 }
 
 void SpeedGridCooling::initial_state(const double*, double rtol, double* z, double* atol) const {
-  // DSMC's start: every species Maxwellian (at its frame's T = 1). The coefficients are O(√m_k) (a density in u).
+  // DSMC's start: every species Maxwellian (at its frame's T = 1), or the given densities. The coefficients are O(√m_k)
+  // (a density in u): the Maxwellian's largest sets the absolute tolerance.
   for (std::size_t k = 0; k < N_; ++k) {
     const Eigen::VectorXd P = maxwellian_speed_density(grids_[k], rates_.mixture()[k].mass, 1.0);
     const double scale = P.cwiseAbs().maxCoeff();
-    for (std::size_t i = 0; i < nb_; ++i) z[k * nb_ + i] = P[Eigen::Index(i)], atol[k * nb_ + i] = rtol * scale;
+    for (std::size_t i = 0; i < nb_; ++i)
+      z[k * nb_ + i] = z0_.empty() ? P[Eigen::Index(i)] : z0_[k * nb_ + i], atol[k * nb_ + i] = rtol * scale;
   }
 }
 

@@ -58,8 +58,10 @@ class SpeedGridCooling final : public CoolingModel {
  public:
   // rates: constant restitution (std::invalid_argument otherwise). partner_order 3: partners through a₂ and a₃; 2: a₂
   // alone (the a₃ term's size: an estimate of the partners' truncation, as converged_hcs's before 2026-12-05).
-  explicit SpeedGridCooling(const CollisionRates& rates, int partner_order = 3, SpeedGridSettings grid = {});
-  // z: the species' spline coefficients, species after species (K + 3 each); all Maxwellian at t = 0.
+  // z0: the densities at t = 0 (empty: every species Maxwellian, DSMC's start; an aged start: those of the same history
+  // at the end of the ageing, theory_level.cpp).
+  explicit SpeedGridCooling(const CollisionRates& rates, int partner_order = 3, SpeedGridSettings grid = {}, std::vector<double> z0 = {});
+  // z: the species' spline coefficients, species after species (K + 3 each).
   std::size_t state_size() const override { return N_ * nb_; }
   void initial_state(const double* T0, double rtol, double* z, double* atol) const override;
   void rates(const double* T, const double* z, double* xi, double* dz_dt) const override;
@@ -81,6 +83,7 @@ class SpeedGridCooling final : public CoolingModel {
   std::vector<SpeedGrid> grids_;              // per species: drift, Gram, moments (the frame at T = 1)
   std::vector<Eigen::LDLT<Eigen::MatrixXd>> gram_;
   std::vector<Eigen::VectorXd> c2_;           // gram⁻¹ u2: u² in the splines' span
+  std::vector<double> z0_;
   mutable std::vector<std::map<long, Sources>> tables_;  // per pair k·N + j: ln ρ node ↦ sources
   mutable std::size_t tables_size_ = 0;
   mutable Eigen::VectorXd a2_, a3_, work_;

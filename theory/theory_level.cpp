@@ -232,7 +232,7 @@ class ConvergedLevel final : public TheoryLevel {
     // (docs/paper-fidelity.md; test "kinetic-converged-hcs: …").
     bool hcs_converged = false;
     // "kinetic-converged-grid": the temperatures and the species' shapes in time without the Sonine truncation (the
-    // speed grid, speed_grid_cooling.hpp; constant ε, Maxwellian starts, up to grid_species_limit species), the HCS the
+    // speed grid, speed_grid_cooling.hpp; constant ε, up to grid_species_limit species), the HCS the
     // converged one. Why: in time the Sonine series is asymptotic where a light species runs far from its partners'
     // temperature (v1 Fig. 2's light species at t = 10: orders 2 / 3 / 4 −3.8 / 0 / −3.4% from order 3); on the grid
     // v1 Fig. 2's light T and v1 Fig. 6's light MSD lie within 0.1–0.2% of paper-fidelity DSMC at every time (README).
@@ -324,9 +324,15 @@ class ConvergedLevel final : public TheoryLevel {
   // kinetic-converged-hcs: a settled start has the converged HCS's ratios, at the kinetic level's T₁ (the same time scale).
   std::vector<double> initial_temperatures(const model::InitialState& init, const CollisionRates& rates,
                                            TemperatureOptions& opt) const override {
-    if (v_.grid && init.kind == model::InitialState::Kind::aged)
-      throw InputError("level " + name_ + ": its speed densities start Maxwellian, as DSMC's; an aged start has the settled shapes "
-                       "(allowed: initial.temperatures other than \"aged\")");
+    if (v_.grid && init.kind == model::InitialState::Kind::aged) {
+      // DSMC ages its gas with the true collisions from Maxwellians at T_hot: so does the grid (opt.cooling, configure's),
+      // and the history starts from the aged densities.
+      TemperatureOptions ageing;
+      ageing.rtol = opt.rtol, ageing.cooling = opt.cooling;
+      const AgedState a = aged_state(init.T_hot, rates, ageing);
+      opt.cooling = grid_cooling(rates, a.z);
+      return a.T;
+    }
     std::vector<double> T = base_.initial_temperatures(init, rates, opt);
     if (!v_.hcs_converged) return T;
     // Its MSD is the settled memory's closed form: true from a settled start only (`granmix theory --level` can ask).
@@ -409,13 +415,13 @@ class ConvergedLevel final : public TheoryLevel {
   // N² pairs' speed-grid operators along the history (three per node of ln(T_j/T_k), ~5 ms each): v1 Fig. 6's three
   // species 259 nodes. Beyond this many species the level refuses.
   static constexpr std::size_t grid_species_limit = 10;
-  std::shared_ptr<const CoolingModel> grid_cooling(const CollisionRates& rates) const {
+  std::shared_ptr<const CoolingModel> grid_cooling(const CollisionRates& rates, std::vector<double> z0 = {}) const {
     if (rates.law().is_viscoelastic())
       throw InputError("level " + name_ + ": the speed grid's exact sphere integrals need a constant restitution coefficient (allowed: collisions.restitution = number)");
     if (rates.size() > grid_species_limit)
       throw InputError("level " + name_ + ": " + std::to_string(rates.size()) + " species; the speed-grid temperatures take up to " +
                        std::to_string(grid_species_limit) + " (allowed: level = \"kinetic-converged-cooling3\" for more)");
-    return std::make_shared<SpeedGridCooling>(rates, v_.a2_only ? 2 : 3);
+    return std::make_shared<SpeedGridCooling>(rates, v_.a2_only ? 2 : 3, SpeedGridSettings{}, std::move(z0));
   }
   void refuse_beyond_species_limit(const CollisionRates& rates) const {
     // N² Galerkin pair problems per settled state, ~1 ms each (tracer_diffusion_galerkin.hpp): 1e4 pairs is ~5 s per
