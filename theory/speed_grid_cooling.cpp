@@ -47,7 +47,6 @@ const SpeedGridCooling::Sources& SpeedGridCooling::node(std::size_t k, std::size
     s[q] = assemble_speed_grid(speed_grid_pair(rates_, k, j, rho, shapes[q]), widths_ / std::sqrt(rates_.mixture()[k].mass), K_, rule_,
                                SpeedGridParts::density)
                .collisions;
-  ++tables_size_;
   return table.emplace(at, std::move(s)).first->second;
 }
 

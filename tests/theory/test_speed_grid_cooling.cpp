@@ -120,7 +120,7 @@ TEST_CASE("speed-grid temperatures: the drift's outflow term keeps every mode de
   CHECK(largest < 1e-3 * fastest);
 }
 
-TEST_CASE("speed-grid temperatures: the scenes that judge them - their collision rule's part is their relative, the a3 term 0.1-0.5%", "[theory]") {
+TEST_CASE("speed-grid temperatures: the scenes that judge them - their collision rule's part is their relative, the a3 term 0.1-0.5%", "[theory][slow]") {
   // The scenes at the level kinetic-converged-grid compute its model error per point from the companions a2 (every shape
   // through a₂ alone: the a₃ term's size) and basis; what neither measures is the collision rule over the partners'
   // velocities, their `relative`: 12 against 16 points, the largest change of any T over the scene's times, rounded up
