@@ -22,10 +22,9 @@ SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_orde
   if (rates.law().is_viscoelastic())
     throw std::invalid_argument("speed-grid temperatures: constant restitution only (a viscoelastic eps(u) has no scale-free pair operator)");
   if (partner_order != 2 && partner_order != 3) throw std::invalid_argument("speed-grid temperatures: partner order 2 or 3");
-  const model::Mixture& mix = rates.mixture();
   for (std::size_t k = 0; k < N_; ++k) {
     // The frame's own grid (drift, Gram, moments do not depend on the partner): any pair's assembly.
-    grids_.push_back(assemble_speed_grid(speed_grid_pair(rates, k, k, 1.0, {}), widths_ / std::sqrt(mix[k].mass), K_, rule_,
+    grids_.push_back(assemble_speed_grid(speed_grid_pair(rates, k, k, 1.0, {}), domain(k), K_, rule_,
                                          SpeedGridParts::density));
     gram_.emplace_back(grids_[k].gram);
     if (gram_[k].info() != Eigen::Success) throw NumericalError("speed-grid temperatures: the Gram matrix (Eigen LDLT) failed");
@@ -36,6 +35,8 @@ SpeedGridCooling::SpeedGridCooling(const CollisionRates& rates, int partner_orde
   z0_ = std::move(z0);
 }
 
+double SpeedGridCooling::domain(std::size_t k) const { return widths_ / std::sqrt(rates_.mixture()[k].mass); }
+
 const SpeedGridCooling::Sources& SpeedGridCooling::node(std::size_t k, std::size_t j, long at) const {
   std::map<long, Sources>& table = tables_[k * N_ + j];
   const auto found = table.find(at);
@@ -44,7 +45,7 @@ const SpeedGridCooling::Sources& SpeedGridCooling::node(std::size_t k, std::size
   const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   Sources s;
   for (std::size_t q = 0; q < 3; ++q)
-    s[q] = assemble_speed_grid(speed_grid_pair(rates_, k, j, rho, shapes[q]), widths_ / std::sqrt(rates_.mixture()[k].mass), K_, rule_,
+    s[q] = assemble_speed_grid(speed_grid_pair(rates_, k, j, rho, shapes[q]), domain(k), K_, rule_,
                                SpeedGridParts::density)
                .collisions;
   return table.emplace(at, std::move(s)).first->second;
@@ -89,7 +90,7 @@ void SpeedGridCooling::rates(const double* T, const double* z, double* xi, doubl
     Eigen::VectorXd drift = grids_[k].drift * P;
     xi[k] = -2.0 * scale * c2_[k].dot(work_) / c2_[k].dot(drift);
     if (xi[k] > 0.0) {  // the drift flows out at U: its boundary term (upwind; tracer_speed_grid.hpp SpeedGrid::edge)
-      drift -= (widths_ / std::sqrt(rates_.mixture()[k].mass) * grids_[k].edge.dot(P)) * grids_[k].edge;
+      drift -= (domain(k) * grids_[k].edge.dot(P)) * grids_[k].edge;
       xi[k] = -2.0 * scale * c2_[k].dot(work_) / c2_[k].dot(drift);
     }
     if (dz_dt == nullptr) continue;

@@ -73,6 +73,7 @@ class SpeedGridCooling final : public CoolingModel {
  private:
   using Sources = std::array<Eigen::MatrixXd, 3>;  // C of the shapes 1, S₂, S₃
   const Sources& node(std::size_t k, std::size_t j, long at) const;
+  double domain(std::size_t k) const;  // U of species k's frame: widths_ thermal widths at T = 1
 
   const CollisionRates& rates_;
   std::size_t N_, K_, nb_;
