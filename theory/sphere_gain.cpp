@@ -2,69 +2,92 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 
 namespace granmix::theory {
 
 namespace {
 
-// The four cubic B-splines nonzero on a knot interval, s = h(q + t), 0 ≤ t < 1: N_e(t) for spline q + e.
+// The four cubic B-splines nonzero on a knot interval, s = h(q + t), 0 ≤ t < 1: N_e(t) = Σ_k spline_terms[e][k] tᵏ
+// for spline q + e.
+constexpr double spline_terms[4][4] = {
+    {1.0 / 6.0, -3.0 / 6.0, 3.0 / 6.0, -1.0 / 6.0},
+    {4.0 / 6.0, 0.0, -6.0 / 6.0, 3.0 / 6.0},
+    {1.0 / 6.0, 3.0 / 6.0, 3.0 / 6.0, -3.0 / 6.0},
+    {0.0, 0.0, 0.0, 1.0 / 6.0},
+};
+
 void splines_at(double t, double out[4]) {
-  const double r = 1.0 - t, t2 = t * t, t3 = t2 * t;
-  out[0] = r * r * r / 6.0;
-  out[1] = (4.0 - 6.0 * t2 + 3.0 * t3) / 6.0;
-  out[2] = (1.0 + 3.0 * t + 3.0 * t2 - 3.0 * t3) / 6.0;
-  out[3] = t3 / 6.0;
+  for (std::size_t e = 0; e < 4; ++e)
+    out[e] = spline_terms[e][0] + t * (spline_terms[e][1] + t * (spline_terms[e][2] + t * spline_terms[e][3]));
 }
 
-// M[p][e] = ∫₀ᵗ τᵖ N_e(τ) dτ, p = 0, 1, 2 (p = 2 only with second: the speed density needs p ≤ 1, a third fewer
-// polynomials in its innermost loop).
-using Moments = std::array<std::array<double, 4>, 3>;
-Moments moments_to(double t, bool second = true) {
-  const double t2 = t * t, t3 = t2 * t, t4 = t3 * t, t5 = t4 * t, t6 = t5 * t, r = 1.0 - t;
-  Moments M{};
-  M[0] = {(1.0 - r * r * r * r) / 24.0, (4.0 * t - 2.0 * t3 + 0.75 * t4) / 6.0, (t + 1.5 * t2 + t3 - 0.75 * t4) / 6.0, t4 / 24.0};
-  M[1] = {(0.5 * t2 - t3 + 0.75 * t4 - 0.2 * t5) / 6.0, (2.0 * t2 - 1.5 * t4 + 0.6 * t5) / 6.0, (0.5 * t2 + t3 + 0.75 * t4 - 0.6 * t5) / 6.0,
-          0.2 * t5 / 6.0};
-  if (!second) return M;
-  M[2] = {(t3 / 3.0 - 0.75 * t4 + 0.6 * t5 - t6 / 6.0) / 6.0, (4.0 * t3 / 3.0 - 1.2 * t5 + 0.5 * t6) / 6.0,
-          (t3 / 3.0 + 0.75 * t4 + 0.6 * t5 - 0.5 * t6) / 6.0, t6 / 36.0};
-  return M;
-}
-
-const Moments& whole_interval() {
-  static const Moments M = moments_to(1.0);
-  return M;
+// The coefficient of tⁿ (n = 1 … 6) in ∫₀ᵗ (q + τ)ᵖ N_e(τ) dτ = Σ_j C(p, j) q^(p−j) Σ_k spline_terms[e][k] t^(k+j+1)/(k+j+1).
+double interval_term(std::size_t q, std::size_t p, std::size_t e, std::size_t n) {
+  constexpr double binomial[3][3] = {{1.0, 0.0, 0.0}, {1.0, 1.0, 0.0}, {1.0, 2.0, 1.0}};
+  double sum = 0.0;
+  for (std::size_t j = 0; j <= p; ++j)
+    if (n >= j + 1 && n - j - 1 < 4) sum += binomial[p][j] * std::pow(double(q), double(p - j)) * spline_terms[e][n - j - 1] / double(n);
+  return sum;
 }
 
 }  // namespace
 
-SphereGain::SphereGain(std::size_t nb, double h) : h_(h), nb_(nb), gain_(nb + 3), whole_(nb + 3) {}
+// The tables of nb splines (they do not depend on h), built once per nb: an assembly makes a SphereGain per knot interval.
+const SphereGain::Terms& SphereGain::terms(std::size_t nb) {
+  static std::mutex guard;
+  static std::map<std::size_t, Terms> built;  // nodes stay where they are: the references handed out stay valid
+  const std::lock_guard<std::mutex> lock(guard);
+  const auto found = built.find(nb);
+  if (found != built.end()) return found->second;
+  Terms t{std::vector<double>(3 * nb * 4 * powers), std::vector<std::array<double, 3>>(nb)};
+  for (std::size_t p = 0; p < 3; ++p)
+    for (std::size_t q = 0; q < nb; ++q)
+      for (std::size_t e = 0; e < 4; ++e) {
+        double* c = t.interval.data() + ((p * nb + q) * 4 + e) * powers;
+        for (std::size_t n = 1; n < powers; ++n) c[n] = interval_term(q, p, e, n);
+        // n = 0: spline q + e over the intervals below q (an end in interval q has passed those)
+        for (std::size_t below = q + e >= 3 ? q + e - 3 : 0; below < q; ++below)
+          for (std::size_t n = 1; n < powers; ++n) c[0] += interval_term(below, p, q + e - below, n);
+        if (q + e < nb)  // interval q's whole share of spline q + e (t = 1): summed, the spline's support above 0
+          for (std::size_t n = 1; n < powers; ++n) t.whole[q + e][p] += interval_term(q, p, e, n);
+      }
+  return built.emplace(nb, std::move(t)).first->second;
+}
+
+SphereGain::SphereGain(std::size_t nb, double h) : h_(h), nb_(nb), gain_(nb + 3), sums_(3 * nb * powers), terms_(terms(nb)) {}
 
 void SphereGain::clear() {
   std::fill(gain_.begin(), gain_.end(), 0.0);
-  std::fill(whole_.begin(), whole_.end(), std::array<double, 3>{});
+  for (std::size_t p = 0; p < 3; ++p) {
+    if (!used_[p]) continue;
+    std::fill_n(sums_.begin() + std::ptrdiff_t(p * nb_ * powers), nb_ * powers, 0.0);
+  }
+  used_ = {};
 }
 
-// On interval q, with a_p = h^(p+1) W_p: ∫ N_(q+e)(s) Σ_p W_p sᵖ ds = Σ_p a_p ∫ N_e(t)(q + t)ᵖ dt
-//   = (a₀ + a₁q + a₂q²) ΔM₀ + (a₁ + 2a₂q) ΔM₁ + a₂ ΔM₂.
+// One end x = s/h of a range, a_p = ±h^(p+1) W_p: interval q's power sums (n ≤ p + 4 reach the splines).
+void SphereGain::add_end(double x, const std::array<double, 3>& a) {
+  const std::size_t q = std::min(std::size_t(x), nb_ - 1);
+  const double t = x - double(q);
+  double tn[powers];
+  tn[0] = 1.0;
+  for (std::size_t n = 1; n < powers; ++n) tn[n] = tn[n - 1] * t;
+  for (std::size_t p = 0; p < 3; ++p) {
+    if (a[p] == 0.0) continue;
+    double* s = sums_.data() + (p * nb_ + q) * powers;
+    for (std::size_t n = 0; n < p + 5; ++n) s[n] += a[p] * tn[n];
+  }
+}
+
 void SphereGain::add_range(double s_lo, double s_hi, const std::array<double, 3>& W) {
   const double x_lo = s_lo / h_, x_hi = std::min(s_hi / h_, double(nb_));  // beyond: only the dropped entries
   if (x_lo >= x_hi) return;
   const std::array<double, 3> a = {h_ * W[0], h_ * h_ * W[1], h_ * h_ * h_ * W[2]};
-  auto add = [&](std::size_t q, const Moments& M, double sign) {
-    const double fq = double(q), c0 = sign * (a[0] + fq * (a[1] + fq * a[2])), c1 = sign * (a[1] + 2.0 * fq * a[2]), c2 = sign * a[2];
-    for (std::size_t e = 0; e < 4; ++e) gain_[q + e] += c0 * M[0][e] + c1 * M[1][e] + c2 * M[2][e];
-  };
-  const bool second = W[2] != 0.0;
-  const auto q_lo = std::size_t(x_lo), q_hi = std::min(std::size_t(x_hi), nb_ - 1);
-  const Moments lo = moments_to(x_lo - double(q_lo), second);
-  if (q_lo == q_hi) {
-    add(q_lo, moments_to(x_hi - double(q_lo), second), 1.0);
-    return add(q_lo, lo, -1.0);
-  }
-  add(q_lo, whole_interval(), 1.0), add(q_lo, lo, -1.0);                          // [t_lo, 1] of interval q_lo
-  if (x_hi > double(q_hi)) add(q_hi, moments_to(x_hi - double(q_hi), second), 1.0);       // [0, t_hi] of interval q_hi
-  for (std::size_t p = 0; p < 3; ++p) whole_[q_lo + 1][p] += a[p], whole_[q_hi][p] -= a[p];  // q_lo < q < q_hi
+  for (std::size_t p = 0; p < 3; ++p) used_[p] = used_[p] || a[p] != 0.0;
+  add_end(x_hi, a);
+  add_end(x_lo, {-a[0], -a[1], -a[2]});
 }
 
 void SphereGain::add_point(double s, double weight) {
@@ -77,13 +100,20 @@ void SphereGain::add_point(double s, double weight) {
 }
 
 std::vector<double>& SphereGain::finish() {
-  const Moments& M = whole_interval();
-  std::array<double, 3> a{};
-  for (std::size_t q = 0; q < nb_; ++q) {
-    for (std::size_t p = 0; p < 3; ++p) a[p] += whole_[q][p];
-    if (a[0] == 0.0 && a[1] == 0.0 && a[2] == 0.0) continue;
-    const double fq = double(q), c0 = a[0] + fq * (a[1] + fq * a[2]), c1 = a[1] + 2.0 * fq * a[2], c2 = a[2];
-    for (std::size_t e = 0; e < 4; ++e) gain_[q + e] += c0 * M[0][e] + c1 * M[1][e] + c2 * M[2][e];
+  for (std::size_t p = 0; p < 3; ++p) {
+    if (!used_[p]) continue;
+    const double* sums = sums_.data() + p * nb_ * powers;
+    double passed = 0.0;  // Σ of the ends' weights in the intervals above m (their t⁰ sums): spline m wholly passed
+    for (std::size_t m = nb_ - 1; m-- > 0;) passed += sums[(m + 1) * powers], gain_[m] += passed * terms_.whole[m][p];
+    for (std::size_t q = 0; q < nb_; ++q) {
+      const double* s = sums_.data() + (p * nb_ + q) * powers;
+      const double* c = terms_.interval.data() + (p * nb_ + q) * 4 * powers;
+      for (std::size_t e = 0; e < 4; ++e, c += powers) {
+        double sum = 0.0;
+        for (std::size_t n = 0; n < p + 5; ++n) sum += c[n] * s[n];
+        gain_[q + e] += sum;
+      }
+    }
   }
   return gain_;
 }

@@ -4,9 +4,15 @@
 // about c = v − βg/2 (with χ = 2θ the angle to ĝ, (ĝ·σ̂)dσ̂ = dΩ_χ/4: total π). So |v′|² is uniform on
 // [(|c| − R)², (|c| + R)²], the speed s = |v′| has the density s/(2|c|R) there, and every gain the grid needs is
 // Σ_p W_p ∫ N_m(s) sᵖ ds (p = 0, 1, 2) over that range: the speed density's (W₁ = 1/(2|c|R)) and the l = 1 harmonic's
-// (the circle |v′| = s averages v̂·v′ to (v̂·ĉ)(s² + |c|² − R²)/(2|c|)). Piecewise polynomials: two end pieces per
-// collision, the whole knot intervals between by running sums — where a rule of 30 folded σ̂ directions (before
-// 2026-12-05) sampled a cubic spline across ~10 knot intervals.
+// (the circle |v′| = s averages v̂·v′ to (v̂·ĉ)(s² + |c|² − R²)/(2|c|)). Piecewise polynomials — where a rule of 30
+// folded σ̂ directions (before 2026-12-05) sampled a cubic spline across ~10 knot intervals.
+// How: the range's integral is F_m(s_hi) − F_m(s_lo), F_m(s) = Σ_p W_p ∫₀ˢ N_m(σ)σᵖ dσ. At a speed s = h(q + t) in knot
+// interval q, F_m is the whole of every spline that ends below q (m < q), a polynomial in t for the four nonzero there
+// (m = q … q + 3; its t⁰ term their parts below q), 0 above. So each end adds its weights times tⁿ to interval q's
+// power sums, and finish() turns those into the splines' gains once per speed u, with the polynomials' coefficients
+// tabulated once per grid size. Until 2026-12-05 each collision evaluated the moment polynomials at both of its ends:
+// the same numbers to rounding (tests/theory/test_sphere_gain.cpp), v1 Fig. 7's judged level 7.4 → 6.4 s of CPU (means
+// of three runs, one thread; the assembly is ~60% of it).
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -22,15 +28,27 @@ class SphereGain {
   void add_range(double s_lo, double s_hi, const std::array<double, 3>& W);
   // Adds weight · N_m(s): a collision whose sphere is a point (R or |c| ≈ 0).
   void add_point(double s, double weight);
-  // The gain into spline m, once the whole intervals are added (after the last add_range); the caller may subtract its
-  // loss in place (clear() starts the next speed).
+  // The gain into spline m, once every range is added; the caller may subtract its loss in place (clear() starts the
+  // next speed).
   std::vector<double>& finish();
 
+  // tⁿ, n = 0 … 6: ∫₀ᵗ τʲ N_e(τ) dτ has degree ≤ j + 4 ≤ 6; n = 0 carries the spline's intervals below the end's.
+  static constexpr std::size_t powers = 7;
+
  private:
+  void add_end(double x, const std::array<double, 3>& a);
+
   double h_;
   std::size_t nb_;
-  std::vector<double> gain_;  // three entries past the last spline: a speed in the last knot interval reaches them
-  std::vector<std::array<double, 3>> whole_;  // running sums of h^(p+1) W_p over the whole knot intervals
+  std::vector<double> gain_;   // three entries past the last spline: a speed in the last knot interval reaches them
+  std::vector<double> sums_;   // [p][q][n]: Σ over the ends in interval q of ±h^(p+1) W_p tⁿ
+  std::array<bool, 3> used_{};  // the powers p added since clear()
+  struct Terms {
+    std::vector<double> interval;              // [p][q][e][n]: F of spline q + e at t in interval q = Σ_n interval tⁿ
+    std::vector<std::array<double, 3>> whole;  // [m][p]: ∫₀^∞ N_m(s) (s/h)ᵖ d(s/h), the spline wholly passed
+  };
+  static const Terms& terms(std::size_t nb);
+  const Terms& terms_;
 };
 
 }  // namespace granmix::theory
