@@ -101,8 +101,9 @@ FigureResult write_figure(const std::filesystem::path& dir, const model::Scene& 
       if (theory.column(p.y + suffix) >= 0)
         plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}{}')) with lines ls {} {} title '{} {}'",
                                     cycle.size(), o, p.x, p.y, suffix, ls, style, label, what));
+    // Dash-dot: the paper level beside it is dashed (MG Figs. 3, 7 draw all three).
     if (p.maxwell && theory.column(p.y + "_maxwell") >= 0)
-      plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}_maxwell')) with lines ls {} dt 2 title '{} Maxwell'",
+      plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}_maxwell')) with lines ls {} dt 4 title '{} Maxwell'",
                                   cycle.size(), o, p.x, p.y, ls, label));
     if (dsmc && dsmc->column(p.y + "_err") >= 0 && dsmc->column(p.x) >= 0) {
       const auto d = std::find(dcycle.begin(), dcycle.end(), k);

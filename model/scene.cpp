@@ -302,8 +302,8 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis"});
-    if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error"});
+    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis", "knots", "rule", "partners", "domain"});
+    if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error", "phi_error", "delta_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
@@ -418,10 +418,18 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
     const std::string& level = s.theory.level;
     const bool cooling3 = level == "kinetic-cooling3" || level == "kinetic-cooling3-shaped";
     const bool converged = level.starts_with("kinetic-converged");
-    for (const CompareQuantity& q : s.compare)
-      if (!q.error_column.empty() && (level != "kinetic-converged-hcs" || q.name != "D_ratio"))
+    for (const CompareQuantity& q : s.compare) {
+      if (q.error_column == "D_ratio_error" && (level != "kinetic-converged-hcs" || q.name != "D_ratio"))
         t.fail("error_column", "\"D_ratio_error\" is the model error the level kinetic-converged-hcs computes for its D ratios, but the quantity is \"" +
                q.name + "\" at theory.level \"" + level + "\"", "name = \"D_ratio\" with theory.level = \"kinetic-converged-hcs\", or no error_column");
+      // The settled distributions' grid error at the elastic limit (kinetic-hcs-converged): Φ's relative one serves Φ and
+      // G = weight · Φ; Δ has its own.
+      const bool phi_like = q.name == "phi" || q.name == "G";
+      if ((q.error_column == "phi_error" && (!phi_like || level != "kinetic-hcs-converged")) ||
+          (q.error_column == "delta_error" && (q.name != "delta" || level != "kinetic-hcs-converged")))
+        t.fail("error_column", "\"" + q.error_column + "\" is the grid error kinetic-hcs-converged computes for its settled distributions, but the quantity is \"" +
+               q.name + "\" at theory.level \"" + level + "\"", "error_column = \"phi_error\" (phi, G) or \"delta_error\" (delta) with theory.level = \"kinetic-hcs-converged\"");
+    }
     for (const CompareQuantity& q : s.compare)
       for (const std::string& lower : q.correction_from) {
         if (lower == "paper" && level == "paper")
@@ -442,6 +450,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if ((lower == "a2" || lower == "basis") && level != "kinetic-converged-grid")
           t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic-converged-grid\", or correction_from = \"paper\"");
+        if ((lower == "knots" || lower == "rule" || lower == "partners" || lower == "domain") && (level != "kinetic-hcs-converged" || !s.observables.distribution_settled))
+          t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-hcs-converged level's settled distributions, but theory.level is \"" +
+                 level + "\"" + (s.observables.distribution_settled ? "" : " without observables.distribution"),
+                 "theory.level = \"kinetic-hcs-converged\" with observables.distribution = { settled = true, ... }, or correction_from = \"paper\"");
         // The speed-grid temperatures (level kinetic-converged-grid): constant ε, no sweep.
         if (lower == "grid" && (s.restitution.is_viscoelastic() || s.theory.sweep))
           t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient and no sweep",

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -49,12 +50,15 @@ struct State {
   int passes = 0;
   Eigen::MatrixXd jacobian;  // settle's quasi-Newton matrix (empty: start from the Maxwellian one)
   std::vector<SpeedDensityRest> rest;  // Partners::full: each species' rest from the last pass (empty before the first)
+  std::vector<std::pair<double, Eigen::VectorXd>> density;  // each species' knot step and density of the last pass (∫ = 1)
 };
 
 // Species k's stationary density at the cooling rate ζ for which its temperature is the T_k its partners were given.
 struct SpeciesSolution {
   double zeta, a2, a3;
   SpeedDensityRest rest;  // Partners::full only
+  double h;               // the density's knot step and coefficients, ∫ P du = 1 (code units)
+  Eigen::VectorXd P;
 };
 
 // Why a species' grid operator can be singular, said in the mixture's terms: the partner that moves fastest against the
@@ -113,7 +117,8 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
     // θ(ζ) carries the solve's rounding, ~1e-12 relative at strong dissipation (v1 Fig. 5, ε = 0.1: the secant then
     // wandered in it until it gave up); 1e-11 is far inside the passes' settled 1e-8.
     if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu)
-      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid, mix[k].mass, P, m) : SpeedDensityRest{}};
+      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid, mix[k].mass, P, m) : SpeedDensityRest{}, grid.h,
+              P / grid.mass.dot(P)};
     if (f1 == f0) break;
     const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
     z0 = z1, f0 = f1, z1 = z2;
@@ -172,9 +177,11 @@ State settle(const CollisionRates& rates, State s, const Settings& set) {
     Eigen::VectorXd r(dim);
     std::vector<SpeedDensityRest> rest;
     double rest_moved = 0.0;
+    s.density.clear();
     for (std::size_t k = 0; k < N; ++k) {
       SpeciesSolution sol = solve_species(rates, k, s, set, zeta[k], nu);
       zeta[k] = sol.zeta;
+      s.density.emplace_back(sol.h, std::move(sol.P));
       r[Eigen::Index(n + k)] = sol.a2 - s.shapes[k].a2, r[Eigen::Index(n + N + k)] = sol.a3 - s.shapes[k].a3;
       if (full) {
         const double a4k = rest_a4(sol.rest, rates.mixture()[k].mass);
@@ -229,28 +236,48 @@ SettledHcs reduced(const model::Mixture& mix, const State& s, const std::vector<
   h.beta = beta;
   out.zeta = s.zeta0 / std::sqrt(mean);
   h.zeta_star = out.zeta / nu_ref;
+  // v* = v/v₀ with v₀² = v0sq · mean in code units: P(v*) = v₀ P(v₀v*), knots h/v₀ apart.
+  const double v0 = std::sqrt(v0sq * mean);
   for (std::size_t k = 0; k < N; ++k) {
     h.T.push_back(s.T[k] / mean);
     h.c.push_back(2.0 * s.shapes[k].a2);
     h.a3.push_back(s.shapes[k].a3);
     h.lambda.push_back(mix[k].mass * v0sq / (2.0 * h.T[k]));
+    out.density.push_back({s.density[k].first / v0, v0 * s.density[k].second});
   }
   return out;
 }
 
 }  // namespace
 
-ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
+double SpeedDensity::phi(double v) const { return speed_density_at(h, P, v) / (4.0 * std::numbers::pi * v * v); }
+
+namespace {
+
+// The start of every solve: the order-3 Sonine HCS, which also gives β_k (the mixture's alone).
+struct Start {
+  State state;
+  std::vector<double> beta;
+};
+Start sonine_start(const CollisionRates& rates) {
   if (rates.law().is_viscoelastic()) throw std::invalid_argument("converged HCS: constant restitution only (a viscoelastic mixture has no settled state)");
   const model::Mixture& mix = rates.mixture();
-  const std::size_t N = mix.size();
-  // The order-3 Sonine HCS is the start and gives β_k (the mixture's alone).
   const SonineHcs start = sonine_hcs(mix, rates.law(), rates.contact_values(), false, SonineSolver::automatic, 3);
-  State s;
-  s.T = start.T;
-  for (std::size_t k = 0; k < N; ++k) s.shapes.push_back({1.0, 0.5 * start.c[k], start.a3[k]});
+  Start out{{}, start.beta};
+  out.state.T = start.T;
+  for (std::size_t k = 0; k < mix.size(); ++k) out.state.shapes.push_back({1.0, 0.5 * start.c[k], start.a3[k]});
+  return out;
+}
+
+constexpr double to_change = 1e-2;  // each variant's change to ~1% (Settings::relative_stop)
+
+}  // namespace
+
+ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
+  const Start start = sonine_start(rates);
+  const model::Mixture& mix = rates.mixture();
   static const CollisionRule rule(speed_grid_rule_points), finer(fine_rule_points);
-  const State best = settle(rates, s, {speed_grid_widths, 1.0, &rule, Partners::sonine});
+  const State best = settle(rates, start.state, {speed_grid_widths, 1.0, &rule, Partners::sonine});
 
   ConvergedHcs out;
   static_cast<SettledHcs&>(out) = reduced(mix, best, start.beta);
@@ -262,7 +289,6 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
     // the knots and the rule — v1 Fig. 4 at n₂ = 0.01 (the light species' a₃ = −0.61): from U = 7 to 10 widths its c
     // moves by 1.8% and γ by 7.5e-4, where the knots and the rule alone gave an estimate of 0.30% and 9.3e-5; its D
     // ratio by 2e-5 (measured 2026-12-05; test "kinetic-converged-hcs: …"). Over MG's mixtures (α = 0.3): γ ≤ 2e-6.
-    constexpr double to_change = 1e-2;  // each variant's change to ~1% (Settings::relative_stop)
     const State wider = settle(rates, best, {speed_grid_widths, 1.5, &rule, Partners::sonine, to_change});
     const State finer_rule = settle(rates, best, {speed_grid_widths, 1.0, &finer, Partners::sonine, to_change});
     const State wider_domain = settle(rates, best, {wider_domain_widths, 1.0, &rule, Partners::sonine, to_change});
@@ -274,6 +300,24 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
     out.partners_full = reduced(mix, partners_full, start.beta);
   }
   return out;
+}
+
+SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant) {
+  const Start start = sonine_start(rates);
+  static const CollisionRule fine(distribution_rule_points), coarser(distribution_rule_points / 2);
+  const State best = settle(rates, start.state, {speed_grid_widths, 1.0, &fine, Partners::sonine});
+  switch (variant) {
+    case DistributionVariant::solved: return reduced(rates.mixture(), best, start.beta);
+    case DistributionVariant::sparser_knots:
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.5, &fine, Partners::sonine, to_change}), start.beta);
+    case DistributionVariant::coarser_rule:
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &coarser, Partners::sonine, to_change}), start.beta);
+    case DistributionVariant::partners_full:
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &fine, Partners::full, to_change}), start.beta);
+    case DistributionVariant::wider_domain:
+      return reduced(rates.mixture(), settle(rates, best, {wider_domain_widths, 1.0, &fine, Partners::sonine, to_change}), start.beta);
+  }
+  throw std::invalid_argument("converged distribution: unknown variant");
 }
 
 }  // namespace granmix::theory

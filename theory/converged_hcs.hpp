@@ -18,6 +18,8 @@
 // bounded it about twice over (v1 Fig. 4's mixture: T₂/T₁ −1.4% against 3.2% at n₂ = 0.01, −0.16% against 0.42% at
 // 0.03; its D ratio −0.99% against 2.1%).
 // Constant restitution only (a viscoelastic mixture has no settled state).
+#include <Eigen/Dense>
+
 #include <vector>
 
 #include "collision_rates.hpp"
@@ -31,11 +33,21 @@ struct Change {
   double T = 0.0, a2 = 0.0;
 };
 
-// A settled state: T_k (Σ x_k T_k = 1), c_k = 2a₂,k, a₃,k, λ_k, β_k, ζ* in MG's units (sonine_hcs.hpp), and the
-// cooling rate in code units at those T (∝ √T: at T_k λ it is zeta √λ).
+// A species' solved speed density in MG's reduced speed v* = v/v₀ (sonine_hcs.hpp's v₀, at Σ x_k T_k = 1): spline
+// coefficients on knots h apart, ∫ P dv* = 1. Its Φ(v*) = P(v*)/(4πv*²) is MG Eq. (27)'s Φ_k without the Sonine
+// truncation (the settled distributions of MG Figs. 3, 7; 0 beyond the grid, 7 thermal widths of the species).
+struct SpeedDensity {
+  double h = 0.0;
+  Eigen::VectorXd P;
+  double phi(double v) const;
+};
+
+// A settled state: T_k (Σ x_k T_k = 1), c_k = 2a₂,k, a₃,k, λ_k, β_k, ζ* in MG's units (sonine_hcs.hpp), the cooling
+// rate in code units at those T (∝ √T: at T_k λ it is zeta √λ), and every species' speed density.
 struct SettledHcs {
   SonineHcs hcs;
   double zeta = 0.0;
+  std::vector<SpeedDensity> density;
 };
 
 struct ConvergedHcs : SettledHcs {
@@ -53,5 +65,21 @@ struct ConvergedHcs : SettledHcs {
 // rates: constant restitution, χ as given. check: also compute the two error estimates (four more solves).
 // Throws std::invalid_argument for a viscoelastic law, NumericalError where the passes do not settle.
 ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
+
+// The settled distributions pointwise (MG Figs. 3, 7: Φ_k, Δ_k, G_k at every v*) need a finer collision rule than the
+// moments: the gain into the smallest speeds comes from collisions whose post-collision sphere passes near 0, a corner
+// of the partners' velocities that a product rule samples coarsely. MG Fig. 3's species 1 (α = 0.5) at v* = 0.19 / 0.11
+// / 0.04 (knots 0.05 apart): 1.0065 / 1.1485 / 1.3478 with 12 points, 1.0276 / 1.1169 / 1.1884 with 32, 1.0273 / 1.1183 /
+// 1.1616 with 64 (DSMC, quick seed 1: 1.034 ± 0.007 at 0.175, 1.100 ± 0.019 at 0.075); beyond v* = 0.3 all within
+// 0.3%; the moments move by ~1e-5 (measured 2026-12-05). So the distributions are solved with 64 points (~0.1 s per
+// MG binary), and their model error is computed by variants from that state: knots 3/2 as far apart (the splines'
+// error, largest near v = 0, where P ~ v² is small against the error of a Galerkin P: an elastic mixture's Φ, exactly
+// Maxwellian, comes out 8% high at a quarter of a thermal width, 0.7% at one, ≤ 0.05% from two on), the rule of half the
+// points (its change is the rule's error where the rule converges: 32 → 64 moves Φ by ≤ 0.3% at v* ≥ 0.11, 12 → 32 by
+// up to 2%), every partner seen through its full solved density (the one truncation left), the domain 9/7 as wide (the
+// tail near the grid's edge).
+inline constexpr std::size_t distribution_rule_points = 64;
+enum class DistributionVariant { solved, sparser_knots, coarser_rule, partners_full, wider_domain };
+SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant);
 
 }  // namespace granmix::theory

@@ -173,18 +173,25 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
 // the first-Sonine one at every level, as the DSMC's (dsmc/distribution_table.cpp).
 Table distribution_table(const model::Scene& s, const TheoryLevel& level) {
   const auto& o = s.observables;
-  const SonineHcs h = level.hcs(scene_rates(s, s.mixture, s.restitution));
+  const TheoryLevel::SettledDistribution d = level.settled_distribution(scene_rates(s, s.mixture, s.restitution));
+  const SonineHcs& h = d.hcs;
   const SonineHcs first = sonine_hcs(s.mixture, s.restitution, scene_contact_values(s));
   Table t;
   t.columns = {"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"};
+  // A level's own computed error of Φ per bin (kinetic-hcs-converged): relative for Φ and G, and carried into Δ =
+  // (2/c)(Φ/Φ_M − 1), whose absolute error is (2/|c|)(Φ/Φ_M)·e, as a relative one of Δ.
+  if (d.bin_error) t.columns.push_back("phi_error"), t.columns.push_back("delta_error");
   const double width = o.distribution_vmax / double(o.distribution_bins);
   for (std::size_t b = 0; b < o.distribution_bins; ++b) {
     const double lo = b * width, hi = lo + width, v = 0.5 * (lo + hi);
     for (std::size_t k = 0; k < s.mixture.size(); ++k) {
-      const double phi = shell_average([&](double u) { return h.phi(k, u); }, lo, hi);
+      const double phi = shell_average([&](double u) { return d.phi(k, u); }, lo, hi);
       const double maxwell = shell_average([&](double u) { return maxwellian_phi(h.lambda[k], u); }, lo, hi);
-      const double tail = std::exp(first.tail_exponent(k) * v);
-      t.rows.push_back({v, double(k + 1), phi, maxwell, 2.0 / h.c[k] * (phi / maxwell - 1.0), tail * phi, tail * maxwell});
+      const double tail = std::exp(first.tail_exponent(k) * v), delta = 2.0 / h.c[k] * (phi / maxwell - 1.0);
+      t.rows.push_back({v, double(k + 1), phi, maxwell, delta, tail * phi, tail * maxwell});
+      if (!d.bin_error) continue;
+      const double e = d.bin_error(k, lo, hi);
+      t.rows.back().push_back(e), t.rows.back().push_back(2.0 / std::abs(h.c[k]) * (phi / maxwell) * e / std::abs(delta));
     }
   }
   return t;
@@ -389,7 +396,7 @@ TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairT
     SolverStats paper_stats;
     append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
   }
-  for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis"})  // the other levels a model error is measured from
+  for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis", "knots", "rule", "partners", "domain"})  // the other levels a model error is measured from
     if (corrected_from(s, correction)) {
       SolverStats companion_stats;
       append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats, tables),

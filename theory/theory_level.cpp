@@ -6,6 +6,7 @@
 #include <string>
 
 #include "converged_hcs.hpp"
+#include "shell_average.hpp"
 #include "converged_hcs_diffusion.hpp"
 #include "initial_state.hpp"
 #include "settled_ratios.hpp"
@@ -162,10 +163,25 @@ class KineticLevel final : public TheoryLevel {
 // level's. Why: the HCS Sonine series is asymptotic — over MG Figs. 4–5's 18 DSMC points (mean of three paper seeds)
 // orders 2/3/4 swing by 0.3–0.7% at α ≤ 0.5 and the first Sonine is within 0.3% at 15 of them; the converged state is
 // within 0.27% at all 18, and MG Fig. 2's c_k 10–12% below the first Sonine at α = 0.3, as DSMC (README, "The converged
-// HCS"). Constant restitution only (a viscoelastic gas has no HCS).
+// HCS"). Its settled distributions Φ_k are the solved speed densities themselves (no Sonine form at all: MG Figs. 3, 7).
+// Constant restitution only (a viscoelastic gas has no HCS).
+// Its settled distributions are solved with a finer collision rule (converged_distribution: why), their model error
+// computed per point by four companions from that solve: "-knots" (knots 3/2 as far apart), "-rule" (the rule of half the
+// points), "-partners" (every partner seen through its full solved density: the one truncation left) and "-domain" (the
+// grid 9/7 as wide).
 class HcsConvergedLevel final : public TheoryLevel {
  public:
-  const char* name() const override { return "kinetic-hcs-converged"; }
+  explicit HcsConvergedLevel(DistributionVariant variant = DistributionVariant::solved) : variant_(variant) {}
+  const char* name() const override {
+    switch (variant_) {
+      case DistributionVariant::sparser_knots: return "kinetic-hcs-converged-knots";
+      case DistributionVariant::coarser_rule: return "kinetic-hcs-converged-rule";
+      case DistributionVariant::partners_full: return "kinetic-hcs-converged-partners";
+      case DistributionVariant::wider_domain: return "kinetic-hcs-converged-domain";
+      case DistributionVariant::solved: break;
+    }
+    return "kinetic-hcs-converged";
+  }
   MsdMethod msd_method(const model::Scene& s) const override { return base_.msd_method(s); }
   void configure(TemperatureOptions& opt, const CollisionRates& rates) const override { base_.configure(opt, rates); }
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override { return base_.diffusion_at(rates, std::move(T)); }
@@ -175,12 +191,38 @@ class HcsConvergedLevel final : public TheoryLevel {
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     return rates.law().is_viscoelastic() ? base_.settled_temperatures(rates) : hcs(rates).T;
   }
-  SonineHcs hcs(const CollisionRates& rates) const override { return converged_hcs(rates).hcs; }
+  // The companions' HCS is their distributions' state; the level's own the converged HCS (its 12-point rule: γ moves
+  // by ~1e-5 with 64).
+  SonineHcs hcs(const CollisionRates& rates) const override {
+    return variant_ == DistributionVariant::solved ? converged_hcs(rates).hcs : converged_distribution(rates, variant_).hcs;
+  }
+  SettledDistribution settled_distribution(const CollisionRates& rates) const override {
+    SettledHcs s = converged_distribution(rates, variant_);
+    SettledDistribution d{s.hcs, {}, {}};
+    if (variant_ == DistributionVariant::solved) d.bin_error = elastic_bin_error(rates, s.hcs.lambda);
+    d.phi = [density = std::move(s.density)](std::size_t k, double v) { return density[k].phi(v); };
+    return d;
+  }
   TracerLimit tracer(const CollisionRates& rates) const override { return base_.tracer(rates); }
   std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override { return base_.tracer_form(rates, t_end); }
 
  private:
+  // The grid's error where the answer is known: the same mixture elastic, whose settled Φ_k is the Maxwellian, solved
+  // by the same grid; its relative error over the same bin in thermal widths (λ_k: the inelastic state's). Why: the
+  // variants' changes (knots, rule) under-estimate the grid's pointwise error up to ~3× in places — the elastic MG
+  // Fig. 3 mixture's bins of 0.05 err by 0.05–0.5% between one and two thermal widths where the variants move them by
+  // 0.02–0.3% (measured 2026-12-05) — so both parts enter the model error.
+  static std::function<double(std::size_t, double, double)> elastic_bin_error(const CollisionRates& rates, std::vector<double> lambda) {
+    const CollisionRates elastic(rates.mixture(), model::Restitution::constant(rates.size(), 1.0), rates.contact_values());
+    return [e = converged_distribution(elastic, DistributionVariant::solved), lambda = std::move(lambda)](std::size_t k, double lo, double hi) {
+      const double scale = std::sqrt(lambda[k] / e.hcs.lambda[k]);  // v* here ↦ the same thermal widths there
+      const double grid = shell_average([&](double v) { return e.density[k].phi(v); }, scale * lo, scale * hi);
+      const double exact = shell_average([&](double v) { return maxwellian_phi(e.hcs.lambda[k], v); }, scale * lo, scale * hi);
+      return std::abs(grid / exact - 1.0);
+    };
+  }
   KineticLevel base_{kinetic_sonine_order};
+  DistributionVariant variant_;
 };
 
 // kinetic-converged-grid's basis companion: the tracer problem with this many functions (the level's 8). v1 Fig. 2's
@@ -468,6 +510,12 @@ class ConvergedLevel final : public TheoryLevel {
 
 std::unique_ptr<TracerForm> TheoryLevel::tracer_form(const CollisionRates& rates, double) const { return closed_tracer_form(tracer(rates)); }
 
+TheoryLevel::SettledDistribution TheoryLevel::settled_distribution(const CollisionRates& rates) const {
+  SettledDistribution d{hcs(rates), {}, {}};
+  d.phi = [h = d.hcs](std::size_t k, double v) { return h.phi(k, v); };
+  return d;
+}
+
 std::vector<double> TheoryLevel::d_ratio_error(const CollisionRates&) const {
   throw std::logic_error(std::string("level ") + name() + " computes no model error of its D ratios");
 }
@@ -483,6 +531,10 @@ std::string companion_level(const std::string& level, const std::string& correct
   // kinetic-converged-grid's computed parts: every shape through a₂ alone ("a2"), the tracer problem's basis ("basis").
   if (level == "kinetic-converged-grid" && correction == "a2") return "kinetic-converged-grid-a2";
   if (level == "kinetic-converged-grid" && correction == "basis") return "kinetic-converged-grid-basis" + std::to_string(grid_companion_basis);
+  // kinetic-hcs-converged's settled distributions: sparser knots ("knots"), the coarser rule ("rule"), full partners
+  // ("partners"), the wider domain ("domain").
+  if (level == "kinetic-hcs-converged" && (correction == "knots" || correction == "rule" || correction == "partners" || correction == "domain"))
+    return level + "-" + correction;
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
   // The temperatures' next Sonine order: the order-3 levels' temperatures are kinetic-cooling3's (model/scene.cpp: T only).
   if (correction == "cooling4" && (level == "kinetic-cooling3" || level == "kinetic-converged-cooling3")) return "kinetic-cooling4";
@@ -498,6 +550,10 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-cooling3-shaped") return std::make_unique<KineticLevel>(kinetic_sonine_order, 3, true);
   if (name == "kinetic-cooling4") return std::make_unique<KineticLevel>(kinetic_sonine_order, 4);
   if (name == "kinetic-hcs-converged") return std::make_unique<HcsConvergedLevel>();
+  if (name == "kinetic-hcs-converged-knots") return std::make_unique<HcsConvergedLevel>(DistributionVariant::sparser_knots);
+  if (name == "kinetic-hcs-converged-rule") return std::make_unique<HcsConvergedLevel>(DistributionVariant::coarser_rule);
+  if (name == "kinetic-hcs-converged-partners") return std::make_unique<HcsConvergedLevel>(DistributionVariant::partners_full);
+  if (name == "kinetic-hcs-converged-domain") return std::make_unique<HcsConvergedLevel>(DistributionVariant::wider_domain);
   using Variant = ConvergedLevel::Variant;
   if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(Variant{});
   if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3});
@@ -512,7 +568,7 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid, kinetic-converged-grid-a2, kinetic-converged-grid-basis10)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-hcs-converged-knots, kinetic-hcs-converged-rule, kinetic-hcs-converged-partners, kinetic-hcs-converged-domain, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid, kinetic-converged-grid-a2, kinetic-converged-grid-basis10)");
 }
 
 }  // namespace granmix::theory

@@ -11,12 +11,14 @@
 //            (temperatures with a₂ and a₃, sonine_moment_cooling.hpp, and the order-3 HCS; judged by v1 Figs. 2, 9, 10),
 //            kinetic-cooling3-sonineN, kinetic-cooling3-shaped (and the a's in D), kinetic-cooling4 (a₄ too, constant
 //            restitution: the order-3 temperatures' next correction, correction_from = "cooling4"); kinetic-hcs-converged (its HCS
-//            without the Sonine truncation, converged_hcs.hpp; judged by MG Figs. 2, 4, 5).
+//            without the Sonine truncation, converged_hcs.hpp, its settled distributions the solved speed densities
+//            themselves; judged by MG Figs. 2–5, 7; companions -knots, -rule, -partners and -domain for the distributions' model error).
 // Each level has a tracer form (scene `tracer = true`, physics.md §4): paper tracer_limit.hpp (Maxwellian θ,
 // Haff gas, first-Sonine D), kinetic sonine_tracer.hpp (first-Sonine θ with both a₂, Sonine cooling,
 // D to Sonine order 4); both give the MSD and the TAMSD from one velocity correlation in closed form (the
 // kinetic one keeps one mode decaying at ν_eff: no multi-mode transient, unlike the mixture's VACF ODE).
 // A level is a type, chosen once per scene: the code that computes curves never asks which it is.
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,6 +54,16 @@ class TheoryLevel {
   // first Sonine for the paper level (the MG figures' theory) and the kinetic level, Sonine order 3 (a₃ too) for
   // kinetic-cooling3.
   virtual SonineHcs hcs(const CollisionRates& rates) const = 0;
+  // The level's settled distribution in MG's units (MG Figs. 3, 7; distribution_table): its HCS and Φ_k(v*) — the HCS's
+  // Sonine form unless the level solves the densities themselves (kinetic-hcs-converged).
+  struct SettledDistribution {
+    SonineHcs hcs;
+    std::function<double(std::size_t k, double v)> phi;
+    // The relative error of Φ_k's shell average over the bin [lo, hi] that the level computes (empty: none):
+    // kinetic-hcs-converged's grid error at the exact elastic limit of the same mixture, where Φ is Maxwellian.
+    std::function<double(std::size_t k, double lo, double hi)> bin_error;
+  };
+  virtual SettledDistribution settled_distribution(const CollisionRates& rates) const;
   // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1: its θ is where the
   // intruder starts (DSMC's start too).
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;

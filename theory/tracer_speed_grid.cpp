@@ -164,7 +164,8 @@ SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std
 SpeedGridProblem speed_grid_problem(const CollisionRates& rates, const PartnerShape& gas) { return speed_grid_pair(rates, 1, 0, 1.0, gas); }
 
 Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, const SpeedGrid& g, double zeta) {
-  Eigen::MatrixXd A = collisions + 0.5 * zeta * g.drift;
+  const double U = g.h * double(g.edge.size() - 3);
+  Eigen::MatrixXd A = collisions + 0.5 * zeta * (g.drift - U * g.edge * g.edge.transpose());
   const auto last = A.rows() - 1;
   Eigen::VectorXd rhs = Eigen::VectorXd::Zero(A.rows());
   A.row(last) = g.mass.transpose(), rhs[last] = 1.0;
@@ -233,14 +234,22 @@ SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::V
   for (std::size_t i = 0; i < K; ++i)
     for (std::size_t q = 0; q < uq.x.size(); ++q) {
       const double u = (double(i) + uq.x[q]) * g.h, x = a * u * u;
-      double density = 0.0;
-      for (std::size_t j = i; j <= i + 3; ++j) density += P[Eigen::Index(j)] * spline(u / g.h - double(j) + 3.0);
+      const double density = speed_density_at(g.h, P, u);
       const double sonine = maxwell * u * u * std::exp(-x) * (1.0 + r.a2 * sonine_S2(x) + r.a3 * sonine_S3(x));
       const double mass = (density / norm - sonine) * uq.weight[q] * g.h;
       out.masses.push_back({u, mass}), largest = std::max(largest, std::abs(mass));
     }
   std::erase_if(out.masses, [&](const std::array<double, 2>& e) { return std::abs(e[1]) < 1e-8 * largest; });
   return out;
+}
+
+double speed_density_at(double h, const Eigen::VectorXd& P, double u) {
+  const double x = u / h;
+  if (!(x >= 0.0) || x >= double(P.size() - 3)) return 0.0;
+  const auto i = std::size_t(x);
+  double density = 0.0;
+  for (std::size_t j = i; j <= i + 3; ++j) density += P[Eigen::Index(j)] * spline(x - double(j) + 3.0);
+  return density;
 }
 
 std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T) {

@@ -62,9 +62,10 @@ struct SpeedGrid {
   double h = 0.0;
   Eigen::MatrixXd collisions, collisions_p1, drift, gram, gram_u;
   Eigen::VectorXd mass, u2, u4, u6, gain, drag, u1, gain4;  // u1_j = ∫N_j u du; gain4 as gain for the gas's Δ|w|⁴
-  // N_j(U): the weak form's boundary term of the drift, −U N_m(U) P(U), which the stationary solves leave out (P(U) ~
-  // e^(−24.5)) but a history must keep where the drift flows out (speed_grid_cooling.cpp: without it the Galerkin drift
-  // has growing modes at the edge, rate ∝ 1/h).
+  // N_j(U): the weak form's boundary term of the drift, −U N_m(U) P(U), where it flows out at U. Kept by the histories
+  // and (since 2026-12-05) the stationary solves: without it the Galerkin drift has modes that alternate from knot
+  // to knot at the edge — growing in a history (rate ∝ 1/h; speed_grid_cooling.cpp), and in a stationary solve reaching
+  // the density's values far inside (its moments stayed right to ~5e-6).
   Eigen::VectorXd edge;
 };
 // What to assemble: all of SpeedGrid, or the speed density's operator alone (collisions, drift, Gram matrices, mass,
@@ -77,8 +78,11 @@ enum class SpeedGridParts { all, density };
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule,
                               SpeedGridParts parts = SpeedGridParts::all);
 
-// The stationary speed density of (collisions + (ζ/2) drift) P = 0 with ∫P = 1: the tests sum to ψ = 1 (partition of
-// unity), whose equation is 0 = 0, so the last one gives way to the normalisation. Empty where the system is singular.
+// The stationary speed density of (collisions + (ζ/2) drift) P = 0 with ∫P = 1, the drift with its outflow term at U
+// (SpeedGrid::edge): without it MG Fig. 7's species 1 (α = 0.3) came out with P(v*) alternating in sign beyond v* ≈ 1
+// (−0.28 at 1.5, +1.26 at 2.5, where the Maxwellian is 0.07 and 5e-7) while ∫P and ⟨v²⟩ were right to 6e-7 and 1e-5;
+// with it the density falls smoothly to ~1e-6 at 6 thermal widths (measured 2026-12-05). The last test function's
+// equation (the last spline's, on the edge interval) gives way to the normalisation. Empty where the system is singular.
 Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, const SpeedGrid& g, double zeta);
 
 // What a speed density says, at its own normalisation: θ = m₂⟨u²⟩/3 (T₂/T₁), the cumulants a₂, a₃ at θ, the gas's
@@ -104,6 +108,9 @@ SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::V
 // smooth in α: v1 Fig. 4 at n₂ = 0.01, its effect on T₂/T₁ with 4 / 6 / 8 / 12 points 1.40451 / 1.40307 / 1.40289 /
 // 1.40285% (measured 2026-12-05) — 0.1%, where converged_hcs's check needs its change to ~1%.
 std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T);
+
+// The value at speed u of the density with spline coefficients P on knots h apart (0 beyond its last knot interval).
+double speed_density_at(double h, const Eigen::VectorXd& P, double u);
 
 // The Maxwellian speed density at θ on the grid (its L² projection).
 Eigen::VectorXd maxwellian_speed_density(const SpeedGrid& g, double m2, double theta);

@@ -192,10 +192,12 @@ TEST_CASE("kinetic-converged tracer form beyond its speed grid's mass ratio: a c
   CHECK_THROWS_AS(level->tracer(r), granmix::NumericalError);
   // The kinetic level's tracer form has no grid: finite there.
   CHECK(std::isfinite(make_theory_level("kinetic")->tracer(r).theta));
-  // At m2/m1 = 3000 the grid's θ settles by chance, but moves by 60% with a coarser grid; rare intruders (n2/n1 = 1e-8,
-  // their heating of the gas within the level's 10% share) are refused for that: the 10% limit. At 300 (5.5%) they pass.
+  // At m2/m1 = 3000 the grid's θ once settled by chance (moving by 60% with a coarser grid), and the level refused it by
+  // its 10% share of the gas's energy budget instead; since the stationary solves keep the drift's outflow term
+  // (2026-12-05) it does not settle, and the refusal names the mass ratio and the limit as at 500. At 300 (5.5%) they pass.
   const CollisionRates r3000 = test::constant_rates({{1, 1, 0.1}, {3000, std::cbrt(3000.0), 1e-9}}, 0.5);
-  CHECK_THROWS_WITH(level->tracer(r3000), Catch::Contains("only to") && Catch::Contains("the limit is 10%"));
+  CHECK_THROWS_WITH(level->tracer(r3000), Catch::Contains("mass ratio 3000") && Catch::Contains("m2/m1 = 300"));
+  CHECK_THROWS_AS(level->tracer(r3000), granmix::NumericalError);
   const CollisionRates r300 = test::constant_rates({{1, 1, 0.1}, {300, std::cbrt(300.0), 1e-7}}, 0.5);
   CHECK(std::isfinite(level->tracer(r300).theta));
 }

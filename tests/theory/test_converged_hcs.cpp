@@ -16,6 +16,7 @@
 #include "theory/converged_hcs_diffusion.hpp"
 #include "theory/theory_level.hpp"
 #include "theory/tracer_diffusion_galerkin.hpp"
+#include "theory/tracer_speed_grid.hpp"
 #include "theory/tracer_temperature.hpp"
 #include "theory_fixtures.hpp"
 
@@ -99,6 +100,41 @@ TEST_CASE("converged HCS: an elastic mixture settles at equal temperatures, Maxw
     CHECK(std::abs(c.hcs.a3[k]) < 1e-4);
   }
   CHECK(std::abs(c.hcs.zeta_star) < 1e-4);  // ζ* ≈ 0.9 at α = 0.5
+}
+
+TEST_CASE("converged distributions: an elastic mixture's Phi is the Maxwellian at every speed, to the grid's error", "[theory]") {
+  // MG Figs. 3, 7's mixture (μ = 4, δ = 1/2) elastic: Φ_k(v*) = (λ_k/π)^(3/2) exp(−λ_k v*²) exactly. The solved density's
+  // pointwise error (converged_distribution, 64-point rule), measured 2026-12-05: ≤ 0.31% / 1.08% (species 1 / 2)
+  // between one and two thermal widths, ≤ 0.08% / 0.22% from two to 5.5. A density read at the wrong v₀ (2% off) or with
+  // the wrong normalisation misses by several % at two widths.
+  const SettledHcs d = converged_distribution(mg(4.0, 0.5, 1.0), DistributionVariant::solved);
+  for (std::size_t k = 0; k < 2; ++k) {
+    const double lambda = d.hcs.lambda[k], width = 1.0 / std::sqrt(2.0 * lambda);
+    double near = 0.0, far = 0.0;
+    for (double x = 1.0; x < 5.5; x += 0.01) {
+      const double e = std::abs(d.density[k].phi(x * width) / maxwellian_phi(lambda, x * width) - 1.0);
+      (x < 2.0 ? near : far) = std::max(x < 2.0 ? near : far, e);
+    }
+    std::printf("elastic MG mixture, species %zu: Phi against the Maxwellian %.2e (1-2 widths), %.2e (2-5.5 widths)\n", k + 1, near, far);
+    CHECK(near < 0.015);
+    CHECK(far < 0.003);
+  }
+}
+
+TEST_CASE("converged distributions: the densities fall smoothly (the drift's outflow term at the grid's edge)", "[theory]") {
+  // MG Fig. 7's mixture at α = 0.3 and 0.5. Without the outflow term (before 2026-12-05) species 1's stationary density
+  // alternated in sign from ~3.5 thermal widths on (P(v*) = −0.28 at 1.5, +1.26 at 2.5, where the Maxwellian is 0.07 and
+  // 5e-7) while its moments were right. Now P > 0 up to 5.5 widths (min P/v*² ≥ 6.9e-5 measured) and Φ falls by at least
+  // 2.7% per twentieth of a width from half a width to five (measured: ≤ 0.973 per step).
+  for (double alpha : {0.3, 0.5}) {
+    const SettledHcs d = converged_distribution(mg(4.0, 0.5, alpha), DistributionVariant::solved);
+    for (std::size_t k = 0; k < 2; ++k) {
+      const double width = 1.0 / std::sqrt(2.0 * d.hcs.lambda[k]);
+      INFO("alpha = " << alpha << ", species " << k + 1);
+      for (double x = 0.05; x < 5.5; x += 0.05) CHECK(speed_density_at(d.density[k].h, d.density[k].P, x * width) > 0.0);
+      for (double x = 0.5; x < 5.0; x += 0.05) CHECK(d.density[k].phi((x + 0.05) * width) < d.density[k].phi(x * width));
+    }
+  }
 }
 
 TEST_CASE("converged HCS: the partners' truncation, computed with their full densities (v1 Fig. 4, n2 = 0.01, 0.03)", "[theory]") {
