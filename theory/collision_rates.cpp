@@ -118,6 +118,16 @@ inline void add_pair(double& S_D, double& S_W, double& U_W, double na, double np
 
 }  // namespace
 
+std::vector<double> CollisionRates::key() const {
+  std::vector<double> key;
+  const std::size_t N = size();
+  for (std::size_t k = 0; k < N; ++k) {
+    key.insert(key.end(), {mix_[k].mass, mix_[k].diameter, mix_[k].density});
+    for (std::size_t i = 0; i < N; ++i) key.insert(key.end(), {law_.eps(k, i), chi_[k][i]});
+  }
+  return key;
+}
+
 CollisionRates::CollisionRates(model::Mixture mix, model::Restitution law, std::vector<std::vector<double>> chi,
                                MomentMethod method)
     : mix_(std::move(mix)), law_(std::move(law)), chi_(std::move(chi)), method_(method) {

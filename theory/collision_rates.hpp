@@ -36,6 +36,9 @@ class CollisionRates {
   std::size_t size() const { return mix_.size(); }
   double chi(std::size_t k, std::size_t i) const { return chi_[k][i]; }
   const std::vector<std::vector<double>>& contact_values() const { return chi_; }
+  // What a settled answer depends on besides T: the species (m, σ, n) and every pair's ε and χ — a memo's key (constant
+  // restitution: a viscoelastic law has no settled state).
+  std::vector<double> key() const;
 
   CollisionMoments moments(std::size_t k, std::size_t i, double V) const;
   double xi(std::size_t k, std::size_t i, double Tk, double Ti) const;         // ξ_ki

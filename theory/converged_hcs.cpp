@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -254,13 +257,17 @@ double SpeedDensity::phi(double v) const { return speed_density_at(h, P, v) / (4
 
 namespace {
 
+void refuse_viscoelastic(const CollisionRates& rates) {
+  if (rates.law().is_viscoelastic()) throw std::invalid_argument("converged HCS: constant restitution only (a viscoelastic mixture has no settled state)");
+}
+
 // The start of every solve: the order-3 Sonine HCS, which also gives β_k (the mixture's alone).
 struct Start {
   State state;
   std::vector<double> beta;
 };
 Start sonine_start(const CollisionRates& rates) {
-  if (rates.law().is_viscoelastic()) throw std::invalid_argument("converged HCS: constant restitution only (a viscoelastic mixture has no settled state)");
+  refuse_viscoelastic(rates);
   const model::Mixture& mix = rates.mixture();
   const SonineHcs start = sonine_hcs(mix, rates.law(), rates.contact_values(), false, SonineSolver::automatic, 3);
   Start out{{}, start.beta};
@@ -302,10 +309,41 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
   return out;
 }
 
+namespace {
+
+// The distributions' state of a mixture (distribution_rule_points), solved once per process: the level and its four
+// companions each ask for it, and under the sanitizers the five solves cost CI a minute (the MG scenes' theory 3.4 →
+// ~2 s in a release build). Keyed by CollisionRates::key(); the last few mixtures are kept.
+struct DistributionState {
+  Start start;
+  State best;
+};
+std::shared_ptr<const DistributionState> distribution_state(const CollisionRates& rates) {
+  static std::mutex guard;
+  static std::map<std::vector<double>, std::shared_ptr<const DistributionState>> solved;
+  const std::vector<double> key = rates.key();
+  {
+    const std::lock_guard<std::mutex> lock(guard);
+    const auto found = solved.find(key);
+    if (found != solved.end()) return found->second;
+  }
+  static const CollisionRule fine(distribution_rule_points);
+  Start start = sonine_start(rates);
+  State best = settle(rates, start.state, {speed_grid_widths, 1.0, &fine, Partners::sonine});
+  auto state = std::make_shared<const DistributionState>(DistributionState{std::move(start), std::move(best)});
+  const std::lock_guard<std::mutex> lock(guard);
+  if (solved.size() >= 8) solved.clear();
+  return solved.emplace(key, std::move(state)).first->second;
+}
+
+}  // namespace
+
 SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant) {
-  const Start start = sonine_start(rates);
+  refuse_viscoelastic(rates);
+  const std::shared_ptr<const DistributionState> solved = distribution_state(rates);
+  const Start& start = solved->start;
+  const State& best = solved->best;
   static const CollisionRule fine(distribution_rule_points), coarser(distribution_rule_points / 2);
-  const State best = settle(rates, start.state, {speed_grid_widths, 1.0, &fine, Partners::sonine});
   switch (variant) {
     case DistributionVariant::solved: return reduced(rates.mixture(), best, start.beta);
     case DistributionVariant::sparser_knots:

@@ -6,10 +6,10 @@
 #include <string>
 
 #include "converged_hcs.hpp"
-#include "shell_average.hpp"
 #include "converged_hcs_diffusion.hpp"
 #include "initial_state.hpp"
 #include "settled_ratios.hpp"
+#include "shell_average.hpp"
 #include "sonine2_diffusion.hpp"
 #include "sonine_cooling.hpp"
 #include "sonine_hcs.hpp"
@@ -163,12 +163,12 @@ class KineticLevel final : public TheoryLevel {
 // level's. Why: the HCS Sonine series is asymptotic — over MG Figs. 4–5's 18 DSMC points (mean of three paper seeds)
 // orders 2/3/4 swing by 0.3–0.7% at α ≤ 0.5 and the first Sonine is within 0.3% at 15 of them; the converged state is
 // within 0.27% at all 18, and MG Fig. 2's c_k 10–12% below the first Sonine at α = 0.3, as DSMC (README, "The converged
-// HCS"). Its settled distributions Φ_k are the solved speed densities themselves (no Sonine form at all: MG Figs. 3, 7).
-// Constant restitution only (a viscoelastic gas has no HCS).
-// Its settled distributions are solved with a finer collision rule (converged_distribution: why), their model error
-// computed per point by four companions from that solve: "-knots" (knots 3/2 as far apart), "-rule" (the rule of half the
-// points), "-partners" (every partner seen through its full solved density: the one truncation left) and "-domain" (the
-// grid 9/7 as wide).
+// HCS"). Constant restitution only (a viscoelastic gas has no HCS).
+// Its settled distributions Φ_k are the solved speed densities themselves, no Sonine form at all (MG Figs. 3, 7), solved
+// with a finer collision rule (converged_distribution: why); their model error is computed per bin by four companions
+// from that solve — "-knots" (knots 3/2 as far apart), "-rule" (the rule of half the points), "-partners" (every partner
+// seen through its full solved density: the one truncation left), "-domain" (the grid 9/7 as wide) — and the level's own
+// elastic-limit error (elastic_bin_error).
 class HcsConvergedLevel final : public TheoryLevel {
  public:
   explicit HcsConvergedLevel(DistributionVariant variant = DistributionVariant::solved) : variant_(variant) {}
@@ -313,7 +313,7 @@ class ConvergedLevel final : public TheoryLevel {
     // A sweep asks twice per point (the settled ratio, then the increments from the same settled start): the last
     // answer is kept, keyed by everything it depends on.
     std::vector<double> key = T;
-    const std::vector<double> mixture_key = rates_key(rates);
+    const std::vector<double> mixture_key = rates.key();
     key.insert(key.end(), mixture_key.begin(), mixture_key.end());
     if (key == memo_key_) return memo_;
     const std::size_t N = rates.size();
@@ -473,20 +473,10 @@ class ConvergedLevel final : public TheoryLevel {
                        " Galerkin pair problems per settled state (~1 ms each); the limit is " + std::to_string(converged_species_limit) +
                        " species (allowed: level = \"kinetic\" for more)");
   }
-  // What a settled answer depends on besides T: the species and every pair's ε and χ.
-  static std::vector<double> rates_key(const CollisionRates& rates) {
-    std::vector<double> key;
-    const std::size_t N = rates.size();
-    for (std::size_t k = 0; k < N; ++k) {
-      key.insert(key.end(), {rates.mixture()[k].mass, rates.mixture()[k].diameter, rates.mixture()[k].density});
-      for (std::size_t i = 0; i < N; ++i) key.insert(key.end(), {rates.law().eps(k, i), rates.chi(k, i)});
-    }
-    return key;
-  }
   // A sweep point asks for the settled state three times (its temperatures, its D, its increments' start): solved once.
   // check: with its error estimates (four more solves; the state itself is the same), kept for the later asks.
   const ConvergedHcs& converged_state(const CollisionRates& rates, bool check = false) const {
-    std::vector<double> key = rates_key(rates);
+    std::vector<double> key = rates.key();
     const bool checked = !hcs_memo_.grid_variants.empty();
     if (key != hcs_key_ || (check && !checked)) hcs_memo_ = converged_hcs(rates, check), hcs_key_ = std::move(key);
     return hcs_memo_;

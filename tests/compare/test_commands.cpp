@@ -69,7 +69,8 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   CHECK(t.at(last, "msd") == Approx(0.5 * (t.at(last + 1, "msd") + t.at(last + 2, "msd"))).epsilon(1e-14));
 }
 
-TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside the first Sonine's, with their computed errors", "[compare]") {
+// [slow]: not under the sanitizers (CI's budget; "granmix theory mg-fig07" runs the same level and companions there).
+TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside the first Sonine's, with their computed errors", "[compare][slow]") {
   // Level kinetic-hcs-converged (since 2026-12-05): Φ_k the converged HCS's speed densities themselves, their model error
   // per bin from four companions (knots, rule, partners, domain) and the grid's elastic-limit error (phi_error).
   const Tsv t = theory_of("mg-fig03");
@@ -518,7 +519,8 @@ TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by sc
   CHECK(levels == 3);
 }
 
-TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, five tables written", "[compare][dsmc]") {
+// [slow]: 75 s of CI's sanitizer job (2026-12-05), whose DSMC is covered by the hard and property labels; it runs in make test.
+TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, five tables written", "[compare][dsmc][slow]") {
   const auto d = test::fresh_dir("bench-gaps");
   const auto r = test::run_granmix("bench gaps --quick --json --out " + d.string());
   INFO(r.output);
