@@ -94,8 +94,10 @@ TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside t
   CHECK(sonine > 0.02);
 }
 
+// [slow]: 45 s of CI's sanitizer job (bo1-fig02's three speed-grid levels twice; 2026-12-05), which sees those levels
+// through "granmix theory bo1-fig02" already; it runs in make test.
 TEST_CASE("granmix theory --level: one level alone equals the scene run's companion column - bad names exit 2, nothing written",
-          "[compare]") {
+          "[compare][slow]") {
   const Tsv scene = theory_of("bo1-fig02");
   const auto d = test::fresh_dir("theory-level");
   for (const auto& [level, suffix] : {std::pair<std::string, std::string>{"kinetic-converged-grid", ""}, {"kinetic-converged-grid-a2", "_a2"}, {"kinetic-converged-grid-basis10", "_basis"}}) {
