@@ -178,8 +178,8 @@ Table distribution_table(const model::Scene& s, const TheoryLevel& level) {
   const SonineHcs first = sonine_hcs(s.mixture, s.restitution, scene_contact_values(s));
   Table t;
   t.columns = {"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell"};
-  // A level's own computed error of Φ per bin (kinetic-hcs-converged): relative for Φ and G, and carried into Δ =
-  // (2/c)(Φ/Φ_M − 1), whose absolute error is (2/|c|)(Φ/Φ_M)·e, as a relative one of Δ.
+  // A level's own computed error of Φ per bin (kinetic-hcs-converged): relative for Φ and G (MG Eq. 30: G = weight·Φ),
+  // and carried into Δ = (2/c)(Φ/Φ_M − 1) (MG Eq. 27), whose absolute error is (2/|c|)(Φ/Φ_M)·e, as a relative one of Δ.
   if (d.bin_error) t.columns.push_back("phi_error"), t.columns.push_back("delta_error");
   const double width = o.distribution_vmax / double(o.distribution_bins);
   for (std::size_t b = 0; b < o.distribution_bins; ++b) {
