@@ -447,9 +447,12 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
           t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
                  level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
-        if ((lower == "a2" || lower == "basis") && level != "kinetic-converged-grid")
-          t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
+        if (lower == "a2" && level != "kinetic-converged-grid")
+          t.fail("correction_from", "\"a2\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
                  "theory.level = \"kinetic-converged-grid\", or correction_from = \"paper\"");
+        if (lower == "basis" && level != "kinetic-converged-grid" && level != "kinetic-converged-cooling3")
+          t.fail("correction_from", "\"basis\" is the tracer problem's basis companion of a converged level, but theory.level is \"" + level + "\"",
+                 "theory.level = \"kinetic-converged-grid\" or \"kinetic-converged-cooling3\", or correction_from = \"paper\"");
         if ((lower == "knots" || lower == "rule" || lower == "partners" || lower == "domain") && (level != "kinetic-hcs-converged" || !s.observables.distribution_settled))
           t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-hcs-converged level's settled distributions, but theory.level is \"" +
                  level + "\"" + (s.observables.distribution_settled ? "" : " without observables.distribution"),
@@ -458,10 +461,14 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
         if (lower == "grid" && (s.restitution.is_viscoelastic() || s.theory.sweep))
           t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient and no sweep",
                  "collisions.restitution = number, or correction_from = \"cooling4\"");
-        // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4).
-        if (lower == "cooling4" && ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
+        // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4, or
+        // kinetic-converged-cooling4 beside kinetic-converged-cooling3, whose MSDs then carry it too).
+        const bool msd_like = q.name == "msd" || q.name == "msd_ratio";
+        if (lower == "cooling4" && !(level == "kinetic-converged-cooling3" && msd_like) &&
+            ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
           t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +
-                 "\" at theory.level \"" + level + "\"", "name = \"T\" or \"gamma\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\"");
+                 "\" at theory.level \"" + level + "\"",
+                 "name = \"T\" or \"gamma\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\" (there also \"msd\", \"msd_ratio\")");
         if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
           t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
                  level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");

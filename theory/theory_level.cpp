@@ -225,9 +225,10 @@ class HcsConvergedLevel final : public TheoryLevel {
   DistributionVariant variant_;
 };
 
-// kinetic-converged-grid's basis companion: the tracer problem with this many functions (the level's 8). v1 Fig. 2's
-// MSDs move by ≤ 4.2e-4 from 8 to 10 functions (1.0e-4 from 8 to 7; measured 2026-12-05).
-constexpr std::size_t grid_companion_basis = 10;
+// The converged levels' basis companion (kinetic-converged-grid's, kinetic-converged-cooling3's): the tracer problem with
+// this many functions (the level's 8). v1 Fig. 2's MSDs move by ≤ 4.2e-4 from 8 to 10 functions (1.0e-4 from 8 to 7;
+// measured 2026-12-05).
+constexpr std::size_t companion_basis = 10;
 
 // A velocity decay given the species' a₂ alone (its a₃ withheld: in the tracer's source and in its partners), for
 // kinetic-converged-grid-a2, the companion that measures the a₃ term's size.
@@ -486,7 +487,8 @@ class ConvergedLevel final : public TheoryLevel {
     if (v.grid)
       return std::string("kinetic-converged-grid") + (v.a2_only ? "-a2" : "") +
              (v.basis != converged_diffusion_basis ? "-basis" + std::to_string(v.basis) : "");
-    return std::string(v.cooling_order == 3 ? "kinetic-converged-cooling3" : "kinetic-converged") + (v.reshaped ? "-reshaped" : "");
+    return std::string(v.cooling_order == 2 ? "kinetic-converged" : "kinetic-converged-cooling" + std::to_string(v.cooling_order)) +
+           (v.reshaped ? "-reshaped" : "") + (v.basis != converged_diffusion_basis ? "-basis" + std::to_string(v.basis) : "");
   }
   KineticLevel base_;
   Variant v_;
@@ -518,16 +520,22 @@ std::string companion_level(const std::string& level, const std::string& correct
   if (level == "kinetic-converged-cooling3" && correction == "sonine4") return "kinetic-cooling3";
   // Its temperatures and shapes in time without the Sonine truncation ("grid": kinetic-converged-grid).
   if (level == "kinetic-converged-cooling3" && correction == "grid") return "kinetic-converged-grid";
+  // Its own next orders: the temperatures' (a₄ relaxing too, "cooling4": kinetic-converged-cooling4, whose temperatures
+  // are kinetic-cooling4's, its D the same converged tracer problem) and the tracer problem's basis ("basis"). Why not
+  // the Sonine D ("sonine4") for its MSD: where the Sonine sequence of D diverges (v1 Fig. 8's heaviest species) that
+  // difference measures the Sonine series, not this level (README, "The converged levels' own next orders").
+  if (level == "kinetic-converged-cooling3" && correction == "cooling4") return "kinetic-converged-cooling4";
+  if (level == "kinetic-converged-cooling3" && correction == "basis") return level + "-basis" + std::to_string(companion_basis);
   // kinetic-converged-grid's computed parts: every shape through a₂ alone ("a2"), the tracer problem's basis ("basis").
   if (level == "kinetic-converged-grid" && correction == "a2") return "kinetic-converged-grid-a2";
-  if (level == "kinetic-converged-grid" && correction == "basis") return "kinetic-converged-grid-basis" + std::to_string(grid_companion_basis);
+  if (level == "kinetic-converged-grid" && correction == "basis") return "kinetic-converged-grid-basis" + std::to_string(companion_basis);
   // kinetic-hcs-converged's settled distributions: sparser knots ("knots"), the coarser rule ("rule"), full partners
   // ("partners"), the wider domain ("domain").
   if (level == "kinetic-hcs-converged" && (correction == "knots" || correction == "rule" || correction == "partners" || correction == "domain"))
     return level + "-" + correction;
   if (correction == "cooling3") return level.starts_with("kinetic-converged") ? "kinetic-converged-cooling3" : "kinetic-cooling3";
-  // The temperatures' next Sonine order: the order-3 levels' temperatures are kinetic-cooling3's (model/scene.cpp: T only).
-  if (correction == "cooling4" && (level == "kinetic-cooling3" || level == "kinetic-converged-cooling3")) return "kinetic-cooling4";
+  // The temperatures' next Sonine order.
+  if (correction == "cooling4" && level == "kinetic-cooling3") return "kinetic-cooling4";
   if (correction == "reshaped" && level.starts_with("kinetic-converged") && !level.ends_with("-reshaped")) return level + "-reshaped";
   if (correction == "sonine1" && (level == "kinetic" || level == "kinetic-cooling3")) return level + "-sonine1";
   throw std::invalid_argument("no companion level '" + correction + "' beside the level '" + level + "'");
@@ -547,18 +555,21 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   using Variant = ConvergedLevel::Variant;
   if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(Variant{});
   if (name == "kinetic-converged-cooling3") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3});
+  if (name == "kinetic-converged-cooling4") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 4});
+  if (name == "kinetic-converged-cooling3-basis" + std::to_string(companion_basis))
+    return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .basis = companion_basis});
   if (name == "kinetic-converged-reshaped") return std::make_unique<ConvergedLevel>(Variant{.reshaped = true});
   if (name == "kinetic-converged-cooling3-reshaped") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .reshaped = true});
   if (name == "kinetic-converged-hcs") return std::make_unique<ConvergedLevel>(Variant{.hcs_converged = true});
   if (name == "kinetic-converged-grid") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true});
   if (name == "kinetic-converged-grid-a2") return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true, .a2_only = true});
-  if (name == "kinetic-converged-grid-basis" + std::to_string(grid_companion_basis))
-    return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true, .basis = grid_companion_basis});
+  if (name == "kinetic-converged-grid-basis" + std::to_string(companion_basis))
+    return std::make_unique<ConvergedLevel>(Variant{.cooling_order = 3, .grid = true, .basis = companion_basis});
   for (std::size_t n = 1; n <= max_sonine_modes; ++n) {
     if (name == "kinetic-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n);
     if (name == "kinetic-cooling3-sonine" + std::to_string(n)) return std::make_unique<KineticLevel>(n, 3);
   }
-  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-hcs-converged-knots, kinetic-hcs-converged-rule, kinetic-hcs-converged-partners, kinetic-hcs-converged-domain, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid, kinetic-converged-grid-a2, kinetic-converged-grid-basis10)");
+  throw std::invalid_argument("theory level '" + name + "' (allowed: paper, kinetic, kinetic-sonine1 … kinetic-sonine5, kinetic-cooling3, kinetic-cooling3-sonine1 … 5, kinetic-cooling3-shaped, kinetic-cooling4, kinetic-hcs-converged, kinetic-hcs-converged-knots, kinetic-hcs-converged-rule, kinetic-hcs-converged-partners, kinetic-hcs-converged-domain, kinetic-converged, kinetic-converged-cooling3, kinetic-converged-cooling4, kinetic-converged-cooling3-basis10, kinetic-converged-reshaped, kinetic-converged-cooling3-reshaped, kinetic-converged-hcs, kinetic-converged-grid, kinetic-converged-grid-a2, kinetic-converged-grid-basis10)");
 }
 
 }  // namespace granmix::theory
