@@ -249,7 +249,8 @@ class WithoutThirdSonine final : public VelocityDecay {
   std::shared_ptr<const VelocityDecay> decay_;
 };
 
-// "kinetic-converged" (cooling_order 2) and "kinetic-converged-cooling3" (3): the kinetic level with the tracer problem
+// "kinetic-converged" (cooling_order 2) and "kinetic-converged-cooling3" (3; 4 and a basis of 10 for its companions,
+// companion_level): the kinetic level with the tracer problem
 // solved without the Sonine truncation (tracer_diffusion_galerkin.hpp): the species' own a's in its velocity
 // distribution, the partners' in the collision operator, the level's cooling rate ζ_k in the scaling term.
 // Sweeps: D_k and the velocity memory at the kinetic level's settled state (its HCS: T_k and a₂, with cooling_order 3
