@@ -188,7 +188,7 @@ TEST_CASE("granmix theory bo1-fig09: kinetic-converged-cooling3's own next order
   REQUIRE(k4.rows.size() == t.rows.size());
   // Over the light species' curve: the order-4 temperatures move T (> 0.1%: the companion is not the level itself);
   // with the converged D they move its MSD by < 0.5% (measured 0.25%), where kinetic-cooling4's Sonine D differs from
-  // the converged one by > 1.5% (2.1%: what "cooling4" would carry if it named that level); the basis by < 0.1% (0.02%).
+  // the converged one by > 1.5% (2.0%: what "cooling4" would carry if it named that level); the basis by < 0.1% (0.02%).
   double dT = 0.0, d4 = 0.0, sonine = 0.0, basis = 0.0;
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
     CHECK(t.at(row, "T_cooling4") == Approx(k4.at(row, "T")).epsilon(1e-8));
