@@ -463,9 +463,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
                  "collisions.restitution = number, or correction_from = \"cooling4\"");
         // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4, or
         // kinetic-converged-cooling4 beside kinetic-converged-cooling3, whose MSDs then carry it too).
-        const bool msd_like = q.name == "msd" || q.name == "msd_ratio";
-        if (lower == "cooling4" && !(level == "kinetic-converged-cooling3" && msd_like) &&
-            ((q.name != "T" && q.name != "gamma") || (level != "kinetic-cooling3" && level != "kinetic-converged-cooling3")))
+        const bool order3 = level == "kinetic-cooling3" || level == "kinetic-converged-cooling3";
+        const bool cooling4_applies = (order3 && (q.name == "T" || q.name == "gamma")) ||
+                                      (level == "kinetic-converged-cooling3" && (q.name == "msd" || q.name == "msd_ratio"));
+        if (lower == "cooling4" && !cooling4_applies)
           t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +
                  "\" at theory.level \"" + level + "\"",
                  "name = \"T\" or \"gamma\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\" (there also \"msd\", \"msd_ratio\")");
