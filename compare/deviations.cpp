@@ -40,6 +40,7 @@ std::string tolerance_text(const model::CompareQuantity& q) {
   std::string delta = "Δ";
   for (const std::string& lower : q.correction_from) delta += lower.front();
   if (!q.error_column.empty()) delta += 'e';
+  if (std::isfinite(q.model_error_max)) delta += fmt::format("≤{:g}", q.model_error_max);  // "Δcgb≤0.03": the cap on it
   const bool computed = !q.correction_from.empty() || !q.error_column.empty();
   const std::string rel = !computed ? fmt::format("{:g}", q.relative)
                         : q.relative > 0 ? fmt::format("{:g}+{}", q.relative, delta) : delta;
@@ -52,6 +53,7 @@ nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
   if (q.correction_from.size() == 1) j["correction_from"] = q.correction_from.front();
   if (q.correction_from.size() > 1) j["correction_from"] = q.correction_from;
   if (!q.error_column.empty()) j["error_column"] = q.error_column;
+  if (std::isfinite(q.model_error_max)) j["model_error_max"] = q.model_error_max;
   if (q.absolute > 0) j["absolute"] = q.absolute;
   return j;
 }
@@ -94,7 +96,8 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       // NaN there) is judged as if it had none — stricter, never wider.
       const double own = computed >= 0 && std::isfinite(row[computed]) ? row[computed] : 0.0;
       d.model_error = q.relative + correction + own;
-      d.pass = std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute;
+      d.resolved = d.model_error <= q.model_error_max;
+      d.pass = d.resolved && (std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute);
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;
       out.push_back(d);
     }
@@ -112,6 +115,7 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
       if (!x.judged) continue;
       ++r.judged;
       if (!x.pass) ++r.failed;
+      if (!x.resolved) ++r.unresolved;
       r.max_rel = std::max(r.max_rel, std::abs(x.rel));
       r.max_z = std::max(r.max_z, std::abs(x.z));
       r.max_model_error = std::max(r.max_model_error, x.model_error);
@@ -123,10 +127,10 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
 }
 
 std::string format_deviations(const std::string& provenance, const std::string& x, const std::vector<Deviation>& d) {
-  std::string s = provenance + x + "\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\tpaper_rel\tmodel_error\n";
+  std::string s = provenance + x + "\tspecies\tquantity\ttheory\tdsmc\tdsmc_err\trel\tz\tjudged\tpass\tpaper_rel\tmodel_error\tresolved\n";
   for (const auto& x : d)
-    s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
-                     int(x.judged), int(x.pass), x.paper_rel, x.model_error);
+    s += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", x.t, x.species, x.quantity, x.theory, x.dsmc, x.dsmc_err, x.rel, x.z,
+                     int(x.judged), int(x.pass), x.paper_rel, x.model_error, int(x.resolved));
   return s;
 }
 

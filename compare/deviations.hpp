@@ -22,11 +22,13 @@ struct Deviation {
   bool judged, pass;
   double paper_rel = 0.0;  // (dsmc − paper level)/|paper level|; NaN without a paper column
   double model_error = 0.0;  // the relative tolerance applied at this point (relative + computed correction)
+  bool resolved = true;      // model_error within the quantity's model_error_max (a point beyond fails)
 };
 
 struct QuantityResult {
   model::CompareQuantity spec;
   std::size_t points = 0, judged = 0, failed = 0;
+  std::size_t unresolved = 0;         // judged points failed because their model error exceeds model_error_max
   double max_rel = 0.0, max_z = 0.0;  // over judged points (|rel|, |z|)
   double max_paper_rel = NAN;         // the paper level's largest |rel| over the same points (NaN: none)
   double max_model_error = 0.0;       // largest relative tolerance applied (relative + correction)

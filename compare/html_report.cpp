@@ -61,6 +61,8 @@ std::string tolerance_cell(const ordered_json& t) {
   std::string s = fmt::format("{:g} or {:g}σ", t["relative"].get<double>(), t["z"].get<double>());
   if (t.contains("absolute") && t["absolute"].is_number() && t["absolute"].get<double>() > 0)
     s += fmt::format(" or ±{:g}", t["absolute"].get<double>());
+  if (t.contains("model_error_max") && t["model_error_max"].is_number())
+    s += fmt::format(" (model error ≤ {:g})", t["model_error_max"].get<double>());
   return html_escape(s);
 }
 

@@ -47,6 +47,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
                                     {"points", q.points},
                                     {"judged", q.judged},
                                     {"failed", q.failed},
+                                    {"unresolved", q.unresolved},
                                     {"why", q.spec.why}};
     if (std::isfinite(q.max_paper_rel)) j["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
   }

@@ -26,6 +26,10 @@ std::string summary_lines(const SceneOutcome& o) {
   for (const auto& q : o.quantities)
     s += fmt::format("{:<24} {:<18} {:>9.4f} {:>8.2f} {:>16} {:<5} {:>9.4f} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
                      tolerance_text(q.spec), q.pass() ? "yes" : "NO", q.max_paper_rel, theory, dsmc, cps);
+  for (const auto& q : o.quantities)
+    if (q.unresolved > 0)  // failed whatever DSMC says: the theory's own bound is wider than the level resolves
+      s += fmt::format("{:<24} {}: {} of {} judged points unresolved: model error up to {:.4g}, above model_error_max = {:g}\n", "", label(q.spec),
+                       q.unresolved, q.judged, q.max_model_error, q.spec.model_error_max);
   return s;
 }
 
@@ -33,21 +37,21 @@ void write_summary(const std::filesystem::path& out, const std::vector<SceneOutc
                    const scheduler::GatheredReplicas& run) {
   std::string tsv = "# granmix validate summary (" + utc_now_iso8601() + ")\n";
   tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\t"
-         "paper_max_rel\n";
+         "paper_max_rel\tunresolved\n";
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
                                     {"theory_error", o.theory_error}, {"dsmc_seconds", o.dsmc_seconds},
                                     {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()}};
     if (o.quantities.empty())
-      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
+      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\t0\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
                          o.dsmc_seconds, o.collisions_per_second);
     for (const auto& q : o.quantities) {
-      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative,
+      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative,
                          q.spec.z, int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second, q.spec.absolute,
-                         q.max_paper_rel);
+                         q.max_paper_rel, q.unresolved);
       scene["quantities"][label(q.spec)] = {{"max_rel", q.max_rel}, {"max_z", q.max_z}, {"tolerance", tolerance_json(q.spec)},
-                                          {"pass", q.pass()}};
+                                          {"pass", q.pass()}, {"unresolved", q.unresolved}};
       if (std::isfinite(q.max_paper_rel)) scene["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
     }
     j.push_back(scene);

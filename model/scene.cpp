@@ -305,6 +305,12 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis", "knots", "rule", "partners", "domain"});
     if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error", "phi_error", "delta_error"});
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
+    if (q.has("model_error_max")) {
+      if (c.correction_from.empty() && c.error_column.empty())
+        q.fail("model_error_max", "caps a computed model error, but this quantity has none (no correction_from, no error_column)",
+               "correction_from or error_column beside it, or no model_error_max");
+      c.model_error_max = q.number("model_error_max", 1e-6, 10.0);
+    }
     c.z = q.number("z", 0.0, 100.0, 4.0);
     c.absolute = q.number("absolute", 0.0, 1e300, 0.0);
     if (q.has("species"))

@@ -1,6 +1,7 @@
 #pragma once
 // A scene: one figure or table of a paper (design.md §4). The schema is documented in
 // compare/scenes/README.md; load_scene() refuses anything else with file:line: key: message.
+#include <cmath>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -87,6 +88,11 @@ struct CompareQuantity {
   // A theory column holding the judged level's own computed model error at each point (relative), added too:
   // "D_ratio_error" (kinetic-converged-hcs, theory/converged_hcs_diffusion.hpp). Empty: none.
   std::string error_column;
+  // The resolution the judged level claims for this quantity (relative): a judged point whose model error (relative
+  // + the computed parts) exceeds it fails as unresolved, whatever DSMC says. A bound computed from companions widens
+  // with a bug that moves the companions as much as the level (oscillating densities, README "kill table"); this is the
+  // check that the computed bound is itself what the level was built to resolve (issue 12's targets). Infinite: none.
+  double model_error_max = INFINITY;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes
   std::vector<std::size_t> species;  // 1-based; empty: all rows (species 0 included)

@@ -350,17 +350,32 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
   CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() > 2e-4);
   CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() < 0.002);
   CHECK(rep["quantities"]["gamma"].contains("paper_max_rel"));
+  // γ's resolution claimed (issue 12's 0.5%) holds at every judged point.
+  CHECK(rep["quantities"]["gamma"]["tolerance"]["model_error_max"].get<double>() == 0.005);
+  CHECK(rep["quantities"]["gamma"]["unresolved"].get<int>() == 0);
   // The same scene with an impossible tolerance fails with exit code 1 and says so.
   std::ifstream in(test::scene_path("mg-fig01.toml"));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const std::string loose = "correction_from = [\"kinetic\", \"cooling4\"], relative = 0, z = 4";
-  const auto at = text.find(loose);
+  const std::string scene((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string loose = "correction_from = [\"kinetic\", \"cooling4\"], model_error_max = 0.005, relative = 0, z = 4";
+  const auto at = scene.find(loose);
   REQUIRE(at != std::string::npos);
+  std::string text = scene;
   text.replace(at, loose.size(), "relative = 1e-9, z = 0");
   test::write_file(d / "strict.toml", text);
   const auto strict = test::run_granmix("compare " + (d / "strict.toml").string() + " --out " + (d / "strict").string());
   CHECK(strict.code == 1);
   CHECK(strict.output.find("NO") != std::string::npos);
+  // A claimed resolution below γ's computed model error (0.07%) fails the judged points as unresolved, though DSMC
+  // agrees with them within the computed bound: exit 1, the summary names them, report.json counts them.
+  text = scene;
+  text.replace(at, loose.size(), "correction_from = [\"kinetic\", \"cooling4\"], model_error_max = 1e-4, relative = 0, z = 4");
+  test::write_file(d / "claim.toml", text);
+  const auto claim = test::run_granmix("compare " + (d / "claim.toml").string() + " --out " + (d / "claim").string());
+  CHECK(claim.code == 1);
+  CHECK(claim.output.find("judged points unresolved") != std::string::npos);
+  const auto unresolved = nlohmann::json::parse(std::ifstream(d / "claim" / "mg-fig01" / "report.json"));
+  CHECK(unresolved["quantities"]["gamma"]["unresolved"].get<int>() > 0);
+  CHECK(unresolved["quantities"]["gamma"]["failed"].get<int>() >= unresolved["quantities"]["gamma"]["unresolved"].get<int>());
   // No half-written folder is left beside the finished one.
   for (const auto& e : std::filesystem::directory_iterator(d / "strict")) CHECK(e.path().filename().string().rfind(".", 0) != 0);
 }
@@ -381,12 +396,15 @@ TEST_CASE("granmix compare: a D-ratio scene judged with the level's own model er
   REQUIRE(r.code <= 1);
   CHECK(r.output.find("Δe+4σ") != std::string::npos);
   const Tsv th = read_tsv(d / "out" / "s" / "theory.tsv");
-  // deviations.tsv's quantity column is text: its one data line read by hand, the model error its last field.
+  // deviations.tsv's quantity column is text: its one data line read by hand, the model error its last field but one
+  // (the last: resolved, 1 without a model_error_max).
   const std::string dev = test::data_lines(d / "out" / "s" / "deviations.tsv");
   REQUIRE(th.rows.size() == 6);  // species 1 and 2 of each point
   REQUIRE(std::count(dev.begin(), dev.end(), '\n') == 2);  // the header and the one point
-  const std::string point = dev.substr(dev.find('\n') + 1);
-  REQUIRE(dev.substr(0, dev.find('\n')).ends_with("\tmodel_error"));
+  std::string point = dev.substr(dev.find('\n') + 1);
+  REQUIRE(dev.substr(0, dev.find('\n')).ends_with("\tmodel_error\tresolved"));
+  REQUIRE(point.ends_with("\t1\n"));
+  point = point.substr(0, point.rfind('\t'));
   CHECK(!std::isfinite(th.at(1, "D_ratio_error")));  // ε = 0.3: no DSMC there
   REQUIRE(th.at(3, "eps") == 0.5);
   CHECK(th.at(3, "D_ratio_error") > 0.0);
