@@ -55,14 +55,27 @@ std::string render(const ordered_json& v) {
   return "-";
 }
 
-// "0.021 or 4σ (or ±0.02)" as tolerance_text() prints it, when the tolerance has those fields.
+// The rule of compare/deviations.cpp in words: "0.0001 + |Δ converged, cooling4| + phi_error + 4σ (or ±0.02), model error ≤ 0.03"
+// — the relative part, the computed parts (companions' differences, the level's error column), the statistical part; they add.
 std::string tolerance_cell(const ordered_json& t) {
   if (!t.is_object() || !t.contains("relative") || !t.contains("z")) return render(t);
-  std::string s = fmt::format("{:g} or {:g}σ", t["relative"].get<double>(), t["z"].get<double>());
+  std::vector<std::string> computed;
+  if (t.contains("correction_from")) {
+    const ordered_json& c = t["correction_from"];
+    if (c.is_string()) computed.push_back(c.get<std::string>());
+    if (c.is_array())
+      for (const auto& x : c) computed.push_back(x.is_string() ? x.get<std::string>() : x.dump());
+  }
+  const std::string column = t.contains("error_column") && t["error_column"].is_string() ? t["error_column"].get<std::string>() : "";
+  const double relative = t["relative"].get<double>();
+  std::string s = (computed.empty() && column.empty()) || relative > 0 ? fmt::format("{:g}", relative) : "";
+  if (!computed.empty()) s += fmt::format("{}|Δ {}|", s.empty() ? "" : " + ", fmt::join(computed, ", "));
+  if (!column.empty()) s += (s.empty() ? "" : " + ") + column;
+  s += fmt::format(" + {:g}σ", t["z"].get<double>());
   if (t.contains("absolute") && t["absolute"].is_number() && t["absolute"].get<double>() > 0)
-    s += fmt::format(" or ±{:g}", t["absolute"].get<double>());
+    s += fmt::format(" (or ±{:g})", t["absolute"].get<double>());
   if (t.contains("model_error_max") && t["model_error_max"].is_number())
-    s += fmt::format(" (model error ≤ {:g})", t["model_error_max"].get<double>());
+    s += fmt::format(", model error ≤ {:g}", t["model_error_max"].get<double>());
   return html_escape(s);
 }
 

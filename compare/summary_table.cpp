@@ -11,7 +11,7 @@
 namespace granmix::compare {
 
 std::string summary_header() {
-  return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>9} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
+  return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>20} {:<5} {:>9} {:>18} {:>9} {:>12}\n", "scene", "quantity", "max rel", "max z", "tolerance",
                      "pass", "paper rel", "theory s (error)", "DSMC s", "collisions/s");
 }
 
@@ -20,11 +20,11 @@ std::string summary_lines(const SceneOutcome& o) {
   const std::string cps = o.collisions_per_second > 0 ? fmt::format("{:.3g}", o.collisions_per_second) : "-";
   const std::string dsmc = o.dsmc_seconds > 0 ? fmt::format("{:.2f}", o.dsmc_seconds) : "-";
   if (o.quantities.empty())
-    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>16} {:<5} {:>9} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only",
+    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>20} {:<5} {:>9} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only",
                        o.pass ? "yes" : "NO", "-", theory, dsmc, cps);
   std::string s;
   for (const auto& q : o.quantities)
-    s += fmt::format("{:<24} {:<18} {:>9.4f} {:>8.2f} {:>16} {:<5} {:>9.4f} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
+    s += fmt::format("{:<24} {:<18} {:>9.4f} {:>8.2f} {:>20} {:<5} {:>9.4f} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
                      tolerance_text(q.spec), q.pass() ? "yes" : "NO", q.max_paper_rel, theory, dsmc, cps);
   for (const auto& q : o.quantities)
     if (q.unresolved > 0)  // failed whatever DSMC says: the theory's own bound is wider than the level resolves
