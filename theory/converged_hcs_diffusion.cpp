@@ -5,17 +5,24 @@
 #include <stdexcept>
 
 #include "parallel_each.hpp"
+#include "partner_axial_shape.hpp"
 #include "tracer_diffusion_galerkin.hpp"
 
 namespace granmix::theory {
 
-std::vector<double> converged_d_ratios(const CollisionRates& rates, const SettledHcs& state, std::vector<double>* basis) {
+std::vector<double> converged_d_ratios(const CollisionRates& rates, const SettledHcs& state, std::vector<double>* basis, bool full_shapes) {
   const std::size_t N = rates.size();
   GalerkinOptions opt;
   opt.zeta = state.zeta;  // one ζ for every species: the HCS's (code units at its T)
   std::vector<double> a2(N);
   for (std::size_t k = 0; k < N; ++k) a2[k] = 0.5 * state.hcs.c[k];  // c_k = 2a₂,k
   opt.a2 = a2.data(), opt.a3 = state.hcs.a3.data();
+  std::vector<AxialShape> shapes;
+  if (full_shapes) {
+    if (state.density.size() != N) throw std::invalid_argument("converged_d_ratios: full shapes need every species' solved density");
+    for (std::size_t k = 0; k < N; ++k) shapes.emplace_back(state.density[k], state.hcs.T[k] / rates.mixture()[k].mass);
+    opt.full = &shapes;
+  }
   std::vector<double> D(N), change(N);
   // Each species' problem wholly on one thread: the numbers do not depend on the thread count.
   parallel_each(N, [&](std::size_t k) {
@@ -54,9 +61,10 @@ ConvergedRatioError converged_d_ratio_error(const CollisionRates& rates, const C
     for (std::size_t k = 0; k < N; ++k) e.grid[k] = std::max(e.grid[k], 2.0 * c[k]);
   }
   e.hcs_partners = changes(checked.partners_full);
-  SettledHcs no_a3 = checked;  // the same HCS, its a₃ left out of the tracer problem's shapes only
-  std::fill(no_a3.hcs.a3.begin(), no_a3.hcs.a3.end(), 0.0);
-  e.partners = changes(no_a3);
+  // The same HCS, the tracer problem seeing every partner and the species' own source through the solved densities.
+  const std::vector<double> full = converged_d_ratios(rates, checked, nullptr, true);
+  e.partners.assign(N, 0.0);
+  for (std::size_t k = 1; k < N; ++k) e.partners[k] = std::abs(full[k] / d[k] - 1.0);
   return e;
 }
 

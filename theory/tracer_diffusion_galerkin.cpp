@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/errors.hpp"
+#include "partner_axial_shape.hpp"
 #include "sonine_polynomials.hpp"
 #include "sonine_quadrature.hpp"
 
@@ -120,7 +121,8 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);
   const double flux = weight * 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
   bool shaped = false;  // a Maxwellian partner alone: no shape factors to evaluate
-  for (std::size_t j = 0; j < count; ++j) shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0;
+  for (std::size_t j = 0; j < count; ++j)
+    shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0 || shapes[j].full != nullptr;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
   // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
   const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
@@ -161,7 +163,8 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       const Eigen::Index first = Eigen::Index(h) * L;
       partial.noalias() = B.middleCols(first, L).lazyProduct(loss.middleCols(first, L).transpose());
       const double S2 = sonine_axial_S2(y[Eigen::Index(h)]), S3 = sonine_axial_S3(y[Eigen::Index(h)]);
-      for (std::size_t j = 0; j < count; ++j) out[j] += (shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3) * partial;
+      for (std::size_t j = 0; j < count; ++j)
+        out[j] += (shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3) * partial;
     }
   }
 }
@@ -204,14 +207,14 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
   out.theta = theta_k;
   out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
   for (std::size_t i = 0; i < mix.size(); ++i) {  // collisions with every partner i
-    const PartnerShape shape{1.0, opt.a2 ? opt.a2[i] : 0.0, opt.a3 ? opt.a3[i] : 0.0};
+    const PartnerShape shape{1.0, opt.a2 ? opt.a2[i] : 0.0, opt.a3 ? opt.a3[i] : 0.0, opt.full ? &(*opt.full)[i] : nullptr};
     add_pair_collisions(rates, k, i, theta_k, T[i] / mix[i].mass, basis, lam, &shape, 1, &out.A);
   }
   const GalerkinAverages avg = galerkin_averages(basis, lam);
   const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;
   out.M = avg.M;
   out.A -= 0.5 * zeta * avg.S;
-  out.r = avg.r[0] + (opt.a2 ? opt.a2[k] : 0.0) * avg.r[1] + (opt.a3 ? opt.a3[k] : 0.0) * avg.r[2];
+  out.r = opt.full ? (*opt.full)[k].source(basis) : avg.r[0] + (opt.a2 ? opt.a2[k] : 0.0) * avg.r[1] + (opt.a3 ? opt.a3[k] : 0.0) * avg.r[2];
   return out;
 }
 

@@ -41,6 +41,8 @@
 
 namespace granmix::theory {
 
+class AxialShape;  // partner_axial_shape.hpp
+
 // B_m(x) and x·dB_m/dx, x = c², m < size, at `count` points at once (the quadratures evaluate ~10⁵ points per pair;
 // point by point the serial recurrence was most of their cost): B[m·count + p] (each function's values contiguous, a
 // row-major size × count matrix); xdB may be null.
@@ -68,12 +70,17 @@ struct GalerkinOptions {
   double zeta = std::numeric_limits<double>::quiet_NaN();   // the scaling rate; NaN: ξ_k(T), v1 (A2)
   const double* a2 = nullptr;                               // Sonine shape of every species (null: Maxwellian)
   const double* a3 = nullptr;
+  // Every species' full settled density instead (null: the Sonine shape): the partners' axial shapes and the own
+  // source r from it (partner_axial_shape.hpp; the D ratios' partners' truncation, converged_hcs_diffusion.hpp).
+  const std::vector<AxialShape>* full = nullptr;
 };
 
 // The pieces of the problem, for callers that assemble it at many states (galerkin_decay.hpp):
 // the partner's shape f_i/f_M,i = one + a2 S₂(c_i²) + a3 S₃(c_i²);
+// or, where `full` is set, that density's own E[f_i/f_M,i | c_iz] (partner_axial_shape.hpp; one, a2, a3 unused).
 struct PartnerShape {
   double one = 1.0, a2 = 0.0, a3 = 0.0;
+  const AxialShape* full = nullptr;
 };
 // the collisions of species k (its tracer at θ_k = T_k/m_k) with partner i at θ_i, for each of `count` partner shapes:
 // out[j] += Σ ⟨c B_n · (−L†_i)(c B_m)⟩_w (no scaling term; constant ε: it scales as √θ_k at fixed θ_i/θ_k);

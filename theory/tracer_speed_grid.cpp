@@ -34,21 +34,6 @@ double spline_slope(double x) {
   x -= 1.0;
   return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
 }
-GaussRule legendre(std::size_t n, double a, double b) {
-  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
-  if (t == nullptr) throw NumericalError("tracer speed grid: gsl_integration_glfixed_table_alloc failed");
-  GaussRule r;
-  for (std::size_t j = 0; j < n; ++j) {
-    double x = 0.0, w = 0.0;
-    if (gsl_integration_glfixed_point(a, b, j, &x, &w, t) != 0) {
-      gsl_integration_glfixed_table_free(t);
-      throw NumericalError("tracer speed grid: gsl_integration_glfixed_point failed");
-    }
-    r.x.push_back(x), r.weight.push_back(w);
-  }
-  gsl_integration_glfixed_table_free(t);
-  return r;
-}
 
 const GaussRule& speed_rule() {
   static const GaussRule uq = legendre(speed_points, 0.0, 1.0);
@@ -152,6 +137,22 @@ void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double
 }
 
 }  // namespace
+
+GaussRule legendre(std::size_t n, double a, double b) {
+  gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(n);
+  if (t == nullptr) throw NumericalError("tracer speed grid: gsl_integration_glfixed_table_alloc failed");
+  GaussRule r;
+  for (std::size_t j = 0; j < n; ++j) {
+    double x = 0.0, w = 0.0;
+    if (gsl_integration_glfixed_point(a, b, j, &x, &w, t) != 0) {
+      gsl_integration_glfixed_table_free(t);
+      throw NumericalError("tracer speed grid: gsl_integration_glfixed_point failed");
+    }
+    r.x.push_back(x), r.weight.push_back(w);
+  }
+  gsl_integration_glfixed_table_free(t);
+  return r;
+}
 
 CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)) {}
 

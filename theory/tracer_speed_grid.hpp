@@ -109,6 +109,9 @@ SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::V
 // 1.40285% (measured 2026-12-05) — 0.1%, where converged_hcs's check needs its change to ~1%.
 std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T);
 
+// The n-point Gauss–Legendre rule on [a, b] (GSL's fixed tables).
+GaussRule legendre(std::size_t n, double a, double b);
+
 // The value at speed u of the density with spline coefficients P on knots h apart (0 beyond its last knot interval).
 double speed_density_at(double h, const Eigen::VectorXd& P, double u);
 

@@ -14,6 +14,7 @@
 #include "model/mixture_generators.hpp"
 #include "theory/converged_hcs.hpp"
 #include "theory/converged_hcs_diffusion.hpp"
+#include "theory/partner_axial_shape.hpp"
 #include "theory/theory_level.hpp"
 #include "theory/tracer_diffusion_galerkin.hpp"
 #include "theory/tracer_speed_grid.hpp"
@@ -33,12 +34,16 @@ CollisionRates mg(double mu, double delta, double alpha) {
 // here independently of the level kinetic-converged-hcs: its T_k, a₂, a₃ as the species' and partners' shapes, its ζ
 // (code units at its T). basis: the tracer problem's own truncation of each ratio, |D(size) − D(size − 1)|/D of
 // species k and of species 1, summed.
-std::vector<double> d_ratios_at(const CollisionRates& r, const SettledHcs& c, std::vector<double>* basis = nullptr) {
+// full: every species' solved density as its partners' shape and its own source (partner_axial_shape.hpp).
+std::vector<double> d_ratios_at(const CollisionRates& r, const SettledHcs& c, std::vector<double>* basis = nullptr, bool full = false) {
   GalerkinOptions opt;
   opt.zeta = c.zeta;
   std::vector<double> a2;
   for (double ck : c.hcs.c) a2.push_back(0.5 * ck);
   opt.a2 = a2.data(), opt.a3 = c.hcs.a3.data();
+  std::vector<AxialShape> shapes;
+  for (std::size_t k = 0; full && k < r.size(); ++k) shapes.emplace_back(c.density[k], c.hcs.T[k] / r.mixture()[k].mass);
+  if (full) opt.full = &shapes;
   std::vector<ConvergedDiffusion> d;
   for (std::size_t k = 0; k < r.size(); ++k) d.push_back(converged_tracer_diffusion(r, k, c.hcs.T.data(), opt));
   std::vector<double> ratios;
@@ -60,8 +65,9 @@ double largest_change(const std::vector<double>& from, const std::vector<double>
 
 // The four parts of the D ratios' model error (converged_hcs_diffusion.hpp), transcribed here from their definitions,
 // each the largest over the species k > 1: the HCS grid's (twice the largest change with knots 3/2 apart, the
-// 16-point rule or the domain 9/7 as wide), the HCS partners' truncation (partners through their full densities), the tracer problem's partners' (their a₃
-// left out of it), its basis (one function fewer, species k and 1 summed). c: converged_hcs(r, true).
+// 16-point rule or the domain 9/7 as wide), the HCS partners' truncation (partners through their full densities), the
+// tracer problem's partners' (its partners and source through the solved densities), its basis (one function fewer,
+// species k and 1 summed). c: converged_hcs(r, true).
 struct RatioErrorParts {
   std::vector<double> d;
   double grid = 0.0, hcs_partners = 0.0, partners = 0.0, basis = 0.0;
@@ -72,9 +78,7 @@ RatioErrorParts ratio_error_parts(const CollisionRates& r, const ConvergedHcs& c
   p.d = d_ratios_at(r, c, &basis);
   for (const SettledHcs& v : c.grid_variants) p.grid = std::max(p.grid, 2.0 * largest_change(d_ratios_at(r, v), p.d));
   p.hcs_partners = largest_change(d_ratios_at(r, c.partners_full), p.d);
-  SettledHcs no_a3 = c;  // the same HCS, its a₃ left out of the tracer problem's shapes only
-  std::fill(no_a3.hcs.a3.begin(), no_a3.hcs.a3.end(), 0.0);
-  p.partners = largest_change(d_ratios_at(r, no_a3), p.d);
+  p.partners = largest_change(d_ratios_at(r, c, nullptr, true), p.d);
   p.basis = *std::max_element(basis.begin() + 1, basis.end());
   return p;
 }
@@ -278,9 +282,8 @@ TEST_CASE("kinetic-converged-hcs: the model error parts of the D-ratio scenes' t
   // the level kinetic-converged-hcs, the computed parts of their D_k/D_1's model error, as relative changes of the
   // settled ratio (the judged increments come from the same memory), the largest over the species k > 1: the HCS grid's
   // (twice the largest change with knots 3/2 apart, the 16-point rule or the domain 9/7 as wide), the HCS partners'
-  // truncation (partners through
-  // a₂ alone), the tracer problem's partners' (their a₃ left out of it: the size of the last shape term it keeps), its
-  // basis (one function fewer, species k and 1 summed). The scenes judge with the sum per point and species, which the
+  // truncation (partners through their full densities), the tracer problem's partners' (its partners and source
+  // through the solved densities; the a₃ term's size before stop 43), its basis (one function fewer, species k and 1 summed). The scenes judge with the sum per point and species, which the
   // level computes itself (theory.tsv column D_ratio_error, error_column); this prints the parts behind it. ~30 s.
   auto v1_binary = [](double sigma2, double n2, double eps) { return test::constant_rates({{1.0, 1.0, 0.1}, {100.0, sigma2, n2}}, eps); };
   auto v1_fig07 = [](double eps) {
