@@ -51,7 +51,7 @@ void check_guard_rails(const std::vector<std::string>& scenes, const std::string
     }
     CHECK(both > 0);
     // deviations.tsv: theory dsmc dsmc_err rel z and the applied model_error of every row are finite
-    // numbers (paper_rel is NaN by design where the scene has no paper column).
+    // numbers (paper_rel is NaN by design where the scene has no paper column), resolved a flag.
     std::ifstream in(d / name / "deviations.tsv");
     std::string line;
     std::size_t rows = 0;
@@ -60,10 +60,11 @@ void check_guard_rails(const std::vector<std::string>& scenes, const std::string
       std::vector<std::string> cells;
       std::istringstream cs(line);
       for (std::string c; std::getline(cs, c, '\t');) cells.push_back(c);
-      REQUIRE(cells.size() == 12);
+      REQUIRE(cells.size() == 13);
       INFO(line);
       for (std::size_t c = 3; c <= 7; ++c) CHECK(std::isfinite(std::stod(cells[c])));
       CHECK(std::isfinite(std::stod(cells[11])));
+      CHECK((cells[12] == "0" || cells[12] == "1"));  // resolved: the model error within model_error_max
       ++rows;
     }
     CHECK(rows == both);  // every point present on both sides was compared

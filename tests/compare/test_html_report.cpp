@@ -72,6 +72,8 @@ TEST_CASE("granmix validate writes index.html: summary rows - pass and fail cell
     if (std::filesystem::exists(d / "out" / s / (s + ".png"))) CHECK(html.find("<img src=\"" + s + "/" + s + ".png\"") != std::string::npos);
   }
   CHECK(html.find("Montanero &amp; Garzo 2002, Fig. 1(a)") != std::string::npos);
+  // The tolerance cell states the judging rule: the computed parts add to the statistical one, and the cap.
+  CHECK(html.find("<td>|Δ kinetic, cooling4| + 4σ, model error ≤ 0.005</td>") != std::string::npos);
   CHECK(html.find("why:") != std::string::npos);
   // The title's markup is shown as text, never interpreted.
   CHECK(html.find("&lt;i&gt;a &amp; b&lt;/i&gt;") != std::string::npos);
