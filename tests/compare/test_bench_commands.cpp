@@ -22,15 +22,21 @@ std::vector<nlohmann::json> json_lines(const std::string& output) {
   return out;
 }
 
+// `granmix bench ARGS --out DIR`, which must succeed: the JSON objects it printed.
+std::vector<nlohmann::json> bench_json(const std::string& args, const std::filesystem::path& dir) {
+  const auto r = test::run_granmix("bench " + args + " --out " + dir.string());
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  return json_lines(r.output);
+}
+
 }  // namespace
 
 TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of design.md 3 - table and figure written", "[compare][dsmc]") {
   const auto d = test::fresh_dir("bench");
-  const auto r = test::run_granmix("bench selectors --quick --json --repeats 1 --out " + d.string());
-  INFO(r.output);
-  REQUIRE(r.code == 0);
+  const std::vector<nlohmann::json> objects = bench_json("selectors --quick --json --repeats 1", d);
   std::size_t cases = 0;
-  for (const auto& j : json_lines(r.output)) {
+  for (const auto& j : objects) {
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
     // design.md §3 names these nine; extensions may follow, none may be renamed or missing.
@@ -50,11 +56,9 @@ TEST_CASE("granmix bench selectors --quick --json: one object per case with the 
 
 TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by scene", "[compare]") {
   const auto d = test::fresh_dir("bench-theory");
-  const auto r = test::run_granmix("bench theory --quick --json --repeats 1 --out " + d.string());
-  INFO(r.output);
-  REQUIRE(r.code == 0);
+  const std::vector<nlohmann::json> objects = bench_json("theory --quick --json --repeats 1", d);
   std::size_t levels = 0;
-  for (const auto& j : json_lines(r.output)) {
+  for (const auto& j : objects) {
     const std::string c = j["case"].get<std::string>();
     if (!c.starts_with("levels: ")) continue;
     ++levels;
@@ -70,11 +74,9 @@ TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by sc
 // [slow]: 75 s of CI's sanitizer job (2026-12-05), whose DSMC is covered by the hard and property labels; it runs in make test.
 TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, five tables written", "[compare][dsmc][slow]") {
   const auto d = test::fresh_dir("bench-gaps");
-  const auto r = test::run_granmix("bench gaps --quick --json --out " + d.string());
-  INFO(r.output);
-  REQUIRE(r.code == 0);
+  const std::vector<nlohmann::json> objects = bench_json("gaps --quick --json", d);
   std::size_t light = 0, heavy = 0, cumulant = 0;
-  for (const auto& j : json_lines(r.output)) {
+  for (const auto& j : objects) {
     const std::string name = j["case"];
     if (name.rfind("cumulant: ", 0) == 0) {
       // The integrator that takes the DSMC's c_k(t) gives back the kinetic level's T_k from its own c_k(t) at the
