@@ -17,8 +17,12 @@ class ClosedFormTerms final : public SoninePairTerms {
   SonineMoments self(std::size_t i, double w, double lambda_i) const override {
     return sonine_self(w, 1.0, 1.0, law_.eps(i, i), lambda_i);
   }
-  SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
-    return sonine_cross(w, 1.0, 1.0, law_.eps(i, j), mu_ji, lambda_i, lambda_j);
+  void cross_row(std::size_t i, const double* w, const double* mu, const SonineLambdas& l, const SonineRow& out) const override {
+    const std::size_t N = law_.size();
+    thread_local std::vector<double> eps;
+    eps.resize(N);
+    for (std::size_t j = 0; j < N; ++j) eps[j] = law_.eps(i, j);
+    sonine_cross_row(N, w, eps.data(), mu, l.lambda[i], l.sqrt_lambda, l.inv_sqrt_lambda, out);
   }
   bool concurrent_cross() const override { return true; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
@@ -77,9 +81,14 @@ class ImpactSpeedTerms final : public SoninePairTerms {
     const double th = 0.5 / lambda_i;
     return sonine_moments(sonine_pair_quadrature(th, th, 0.5, eps_nodes(i, i, th + th)), w, th, true);
   }
-  SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const override {
-    const double th_i = 0.5 / lambda_i, th_j = 0.5 / lambda_j;
-    return sonine_moments(sonine_pair_quadrature(th_i, th_j, mu_ji, eps_nodes(i, j, th_i + th_j)), w, th_i, false);
+  void cross_row(std::size_t i, const double* w, const double* mu, const SonineLambdas& l, const SonineRow& out) const override {
+    const double th_i = 0.5 / l.lambda[i];
+    for (std::size_t j = 0; j < law_.size(); ++j) {
+      const double th_j = 0.5 / l.lambda[j];
+      const SonineMoments m = j == i ? SonineMoments{} : sonine_moments(sonine_pair_quadrature(th_i, th_j, mu[j], eps_nodes(i, j, th_i + th_j)), w[j], th_i, false);
+      out.zeta0[j] = m.zeta0, out.zeta_self[j] = m.zeta_self, out.zeta_cross[j] = m.zeta_cross;
+      out.Lambda0[j] = m.Lambda0, out.Lambda_self[j] = m.Lambda_self, out.Lambda_cross[j] = m.Lambda_cross;
+    }
   }
   bool concurrent_cross() const override { return false; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,

@@ -18,13 +18,20 @@
 
 namespace granmix::theory {
 
+// λ_k = m_k v0²/(2T_k) of every species with √λ_k and 1/√λ_k, made once per assembly (SonineSystem).
+struct SonineLambdas {
+  const double *lambda, *sqrt_lambda, *inv_sqrt_lambda;
+};
+
 class SoninePairTerms {
  public:
   virtual ~SoninePairTerms() = default;
-  // Species i with itself and with partner j (w = x_j χ_ij s_ij, mu_ji = m_j/(m_i+m_j)), as sonine_self/cross.
+  // Species i with itself (w = x_i χ_ii s_ii), as sonine_self; and with every partner j at once into out's arrays (w[j] =
+  // x_j χ_ij s_ij, mu[j] = m_j/(m_i+m_j)), as sonine_cross — entry j = i is written too and means nothing (the caller
+  // drops it).
   virtual SonineMoments self(std::size_t i, double w, double lambda_i) const = 0;
-  virtual SonineMoments cross(std::size_t i, std::size_t j, double w, double mu_ji, double lambda_i, double lambda_j) const = 0;
-  // Whether cross() may run on several threads at once (the closed forms: yes; the quadrature shares its per-pair
+  virtual void cross_row(std::size_t i, const double* w, const double* mu, const SonineLambdas& l, const SonineRow& out) const = 0;
+  // Whether cross_row() may run on several threads at once (the closed forms: yes; the quadrature shares its per-pair
   // cache of ε between (i, j) and (j, i): no). SonineSystem::assemble splits its rows over threads when it may.
   virtual bool concurrent_cross() const = 0;
   // The tracer problem of k with partner i (weight = n_i σ_ki² χ_ki, masses, temperatures): the Maxwellian

@@ -24,8 +24,8 @@ namespace granmix::theory {
 
 class SonineSystem {
  public:
-  // α = restitution law; χ = contact values; σ_ref² in the units of the diameters. The arguments are
-  // referenced, not copied: they must outlive the system. The pair terms follow the law
+  // α = restitution law; χ = contact values; σ_ref² in the units of the diameters. The pair weights are read here
+  // (fixed); alpha is referenced by the pair terms made from it: it must outlive the system. The pair terms follow the law
   // (sonine_pair_terms.hpp): MG's closed forms at constant ε; for a viscoelastic law the quadrature over
   // the impact speed, which needs λ_k in units with v0 = 1 (λ_k = m_k/(2T_k), as sonine_cooling.hpp).
   // terms: the pair terms to use (null: made from alpha; pass one to share it with other closures).
@@ -43,11 +43,11 @@ class SonineSystem {
   void moment_residual(const double* c, double* r) const;
 
  private:
-  const model::Mixture& mix_;
-  const std::vector<std::vector<double>>& chi_;
-  double sref2_;
   std::size_t N_;
   std::shared_ptr<const SoninePairTerms> terms_;
+  // Per ordered pair (row i, partner j), fixed by the mixture: w_ij = x_j χ_ij s_ij and μ_ji = m_j/(m_i + m_j).
+  std::vector<double> w_, mu_;
+  std::vector<double> sqrt_lambda_, inv_sqrt_lambda_;  // of the last assembly
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> K_, Z_;  // row i: species i's equation
   Eigen::VectorXd A_, z0_;
 };

@@ -7,6 +7,8 @@
 // binary cross terms show no size factor).
 // Correction applied (physics.md §6): the first prefactor of MG Eq. (40) is (1/8)√(π/2), not
 // (1/8)(√π/2); then ζ_11⁽¹⁾/ζ_1⁽⁰⁾ = 3/32 for one species.
+#include <cstddef>
+
 namespace granmix::theory {
 
 struct SonineMoments {
@@ -25,5 +27,15 @@ SonineMoments sonine_self(double x_i, double chi_ii, double s_ii, double alpha_i
 // λ_i, λ_j (η = λ_i/λ_j). zeta_self and Lambda_self hold the partner's share of ζ_ii⁽¹⁾ and Λ_ii⁽¹⁾.
 SonineMoments sonine_cross(double x_j, double chi_ij, double s_ij, double alpha_ij, double mu_ji, double lambda_i,
                            double lambda_j);
+
+// The same for n partners j at once, field by field (out.zeta0[j], …), with w_j = x_j χ_ij s_ij and the partners'
+// √λ_j, 1/√λ_j given (made once per species): one square root and one division per pair, in a loop that runs on
+// vector registers (v2 Fig. 6's 691 species evaluate all N² pairs at every right-hand side). sonine_cross is its
+// n = 1 case.
+struct SonineRow {
+  double *zeta0, *zeta_self, *zeta_cross, *Lambda0, *Lambda_self, *Lambda_cross;
+};
+void sonine_cross_row(std::size_t n, const double* w, const double* alpha, const double* mu, double lambda_i, const double* sqrt_lambda_j,
+                      const double* inv_sqrt_lambda_j, const SonineRow& out);
 
 }  // namespace granmix::theory
