@@ -8,8 +8,10 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <iterator>
 #include <numbers>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "model/errors.hpp"
@@ -134,9 +136,15 @@ GaussRule make_half_range_rule(std::size_t n) {
 
 }  // namespace
 
-const GaussRule& constant_eps_speed_rule() {
-  static const GaussRule rule = make_half_range_rule(24);
-  return rule;
+const GaussRule& half_range_rule(std::size_t n) {
+  static const std::vector<GaussRule> rules = [] {  // built once (thread-safe static initialisation)
+    std::vector<GaussRule> r;
+    for (std::size_t size : half_range_rule_sizes) r.push_back(make_half_range_rule(size));
+    return r;
+  }();
+  for (std::size_t j = 0; j < std::size(half_range_rule_sizes); ++j)
+    if (half_range_rule_sizes[j] == n) return rules[j];
+  throw std::invalid_argument("half-range Gauss rule: no rule of " + std::to_string(n) + " nodes (12, 16, 24 or 32)");
 }
 
 std::size_t sonine_quadrature_nodes() { return impact_speed_rule().x.size(); }

@@ -35,8 +35,10 @@ GaussRule golub_welsch(std::size_t n, bool laguerre);
 // ∫₀^∞ u φ_V(u) g(u) du ≈ √(2V/π) Σ_n weight_n g(√(2V) x_n), φ_V the N(0, V) density (the rule below).
 const GaussRule& impact_speed_rule();
 // The same integral for an integrand smooth in u (constant ε): the Gauss rule of the weight x e^(−x²) on [0, ∞),
-// 24 nodes (exact to degree 47 in x; the impact-speed rule above is built for ε(u) ∝ u^(1/5) instead).
-const GaussRule& constant_eps_speed_rule();
+// n nodes, exact to degree 2n − 1 in x (the impact-speed rule above is built for ε(u) ∝ u^(1/5) instead); n one of
+// half_range_rule_sizes, each built once.
+inline constexpr std::size_t half_range_rule_sizes[] = {12, 16, 24, 32};
+const GaussRule& half_range_rule(std::size_t n);
 
 // All per unit n_i σ_ki² χ_ki (multiply by it for the pair's rates).
 struct PairSonineIntegrals {

@@ -115,7 +115,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   if (weight == 0.0) return;
   const std::size_t N = basis.size;
   const Rules& g = rules(basis.hermite_points, basis.laguerre_points);
-  const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule() : constant_eps_speed_rule();
+  const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule() : half_range_rule(basis.speed_points);
   const double lam = weight_temperature, theta_w = lam * theta_k, inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   const double mu = mix[i].mass / (mix[i].mass + mix[k].mass);
   const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);
@@ -206,9 +206,11 @@ TracerGalerkin tracer_galerkin(const CollisionRates& rates, std::size_t k, const
   const double theta_k = T[k] / mix[k].mass;
   out.theta = theta_k;
   out.A = Eigen::MatrixXd::Zero(Eigen::Index(N), Eigen::Index(N));
+  RadialBasis pair_basis = basis;
+  if (opt.full) pair_basis.speed_points = full_shape_speed_points;
   for (std::size_t i = 0; i < mix.size(); ++i) {  // collisions with every partner i
     const PartnerShape shape{1.0, opt.a2 ? opt.a2[i] : 0.0, opt.a3 ? opt.a3[i] : 0.0, opt.full ? &(*opt.full)[i] : nullptr};
-    add_pair_collisions(rates, k, i, theta_k, T[i] / mix[i].mass, basis, lam, &shape, 1, &out.A);
+    add_pair_collisions(rates, k, i, theta_k, T[i] / mix[i].mass, pair_basis, lam, &shape, 1, &out.A);
   }
   const GalerkinAverages avg = galerkin_averages(basis, lam);
   const double zeta = std::isnan(opt.zeta) ? rates.xi_species(k, T) : opt.zeta;

@@ -23,7 +23,7 @@
 // B_1, and x₀ = v₀²/(2θ_k), v₀ = Σ_i w_i √(8θ_i/π) / Σ_i w_i (the partners' mean speed, weighted as their
 // collision rates) keeps ν(c) finite at c = 0 as moving partners do. The pair integrals are those of
 // sonine_quadrature.hpp (the impact speed u, then W and |v_⊥|² given u, σ̂ = ẑ): u by the half-range Gauss rule at
-// constant ε (24 nodes; the 80 of the impact-speed rule for ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
+// constant ε (16 nodes, RadialBasis::speed_points; the 80 of the impact-speed rule for ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
 // for the non-polynomial basis: 5e-4 of the elastic 1:100 light species' factor (1.11014 against 1.10958 with
 // 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, ~1 ms per pair (the basis
 // evaluated over all points of one impact speed at once, the sum one matrix product); the species on OpenMP threads.
@@ -52,6 +52,12 @@ struct RadialBasis {
   // The W × |v_⊥|² rule of its pair integrals (add_pair_collisions): 60 × 36 points unless the basis is smooth on the
   // scale of the velocities that meet (collision_weighted_basis at large x₀).
   std::size_t hermite_points = 60, laguerre_points = 36;
+  // The impact speed's half-range rule at constant ε (half_range_rule): 16 nodes. Given W and |v_⊥|² the integrand is
+  // smooth in u and the rule converges fast: against 32 nodes ≤ 5e-10 of a pair source's largest entry where the
+  // partner is not hotter than at an equal start, 6.3e-6 at worst with it e⁴ times hotter (the W × |v_⊥|² tiers' own
+  // budget: 5e-5); v1 Fig. 8's 43 species at their settled ratios: ≤ 1.7e-11 of each species' operator (24 nodes:
+  // 3e-13; 12 nodes: 1.6e-5). tests/theory/test_tracer_diffusion_galerkin.cpp. (24 nodes before 2026-12-06.)
+  std::size_t speed_points = 16;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
@@ -74,6 +80,11 @@ struct GalerkinOptions {
   // source r from it (partner_axial_shape.hpp; the D ratios' partners' truncation, converged_hcs_diffusion.hpp).
   const std::vector<AxialShape>* full = nullptr;
 };
+// The impact speed's rule where the partners are their full densities: E[f_i/f_M,i | c_iz] is a spline of the solved
+// density, less smooth in u than a Sonine shape, so the 16 nodes of the polynomial shapes are not enough. v1 Fig. 5's
+// D-ratio model error at ε = 0.8 (its partners' part moves): 0.2017% with 16 nodes, 0.1698% with 24, 0.1645% with 32
+// (the D ratios themselves ≤ 4e-8 apart).
+inline constexpr std::size_t full_shape_speed_points = 32;
 
 // The pieces of the problem, for callers that assemble it at many states (galerkin_decay.hpp):
 // the partner's shape f_i/f_M,i = one + a2 S₂(c_i²) + a3 S₃(c_i²);

@@ -201,3 +201,49 @@ TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x
     CHECK(err < 5e-5);
   }
 }
+
+TEST_CASE("tracer Galerkin: the impact speed's 16-node rule at constant eps is within the pair rule's budget of 32 nodes", "[theory]") {
+  // Given W and |v_⊥|² the pair integrand is smooth in the impact speed u, so its half-range Gauss rule converges
+  // fast: RadialBasis::speed_points = 16 (24 before 2026-12-06; v1 Fig. 8's pair tables 1.5x faster). Checked as the
+  // coarse-rule test above: both species of 1:5, 1:12, 1:100 and 1:200 binaries (ε = 0.5, each with its own tier),
+  // each partner and partner-shape source alone, the partner as hot as at the start and e^(±4) times hotter, against
+  // 32 nodes, in units of the node's largest entry. Measured: ≤ 5.1e-10 where the partner is not hotter than at the
+  // start; 6.3e-6 at worst (the light species of 1:12 with its heavy partner e⁴ times hotter; 24 nodes: 5.6e-7), below
+  // the W × |v_⊥|² tiers' own budget (5e-5, the test above). 12 nodes: 1.8e-3 (fails both).
+  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  double worst16 = 0.0, worst16_cool = 0.0, worst12 = 0.0;
+  for (double m : {5.0, 12.0, 100.0, 200.0}) {
+    const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {m, std::cbrt(m), 0.1}}, 0.5);
+    const std::vector<double> T0 = {1.0, 1.0};
+    for (std::size_t k = 0; k < 2; ++k) {
+      RadialBasis b16 = collision_weighted_basis(8, converged_basis_x0(r, k, T0.data()));
+      REQUIRE(b16.speed_points == 16);
+      RadialBasis b32 = b16, b12 = b16;
+      b32.speed_points = 32, b12.speed_points = 12;
+      auto sources = [&](const RadialBasis& b, std::size_t i, double rho) {
+        std::array<Eigen::MatrixXd, 3> G;
+        for (auto& g : G) g = Eigen::MatrixXd::Zero(8, 8);
+        add_pair_collisions(r, k, i, 0.5, 0.5 * rho, b, 2.0, shapes, 3, G.data());
+        return G;
+      };
+      for (std::size_t i = 0; i < 2; ++i)
+        for (double f : {std::exp(-4.0), 1.0, std::exp(4.0)}) {
+          const double rho = f * r.mixture()[k].mass / r.mixture()[i].mass;  // θ_i/θ_k at equal temperatures, times f
+          const auto A = sources(b16, i, rho), B = sources(b32, i, rho), C = sources(b12, i, rho);
+          double scale = 0.0;
+          for (const auto& g : B) scale = std::max(scale, g.cwiseAbs().maxCoeff());
+          for (std::size_t j = 0; j < 3; ++j) {
+            const double e16 = (A[j] - B[j]).cwiseAbs().maxCoeff() / scale;
+            worst16 = std::max(worst16, e16);
+            if (f <= 1.0) worst16_cool = std::max(worst16_cool, e16);
+            worst12 = std::max(worst12, (C[j] - B[j]).cwiseAbs().maxCoeff() / scale);
+          }
+        }
+    }
+  }
+  std::printf("impact speed rule against 32 nodes: 16 nodes %.1e (partner not hotter than at the start: %.1e), 12 nodes %.1e\n",
+              worst16, worst16_cool, worst12);
+  CHECK(worst16_cool < 1e-8);
+  CHECK(worst16 < 2e-5);
+  CHECK(worst12 > 5e-5);
+}
