@@ -9,6 +9,7 @@
 #include <map>
 #include <stdexcept>
 
+#include "allocator_setup.hpp"
 #include "commands.hpp"
 #include "granmix_version.hpp"
 #include "model/errors.hpp"
@@ -16,6 +17,7 @@
 
 int main(int argc, char** argv) {
   using namespace granmix;
+  compare::keep_freed_memory();
   compare::set_command_line(argc, argv);
   CLI::App app{"granmix: kinetic theory of granular gas mixtures beside DSMC"};
   app.set_version_flag("--version", std::string(granmix::version) + " (git " + granmix::git_sha + ")");
