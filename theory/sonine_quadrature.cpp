@@ -24,11 +24,12 @@ namespace {
 // Nodes and weights of the u integral in w = (u/√(2V))^(1/10): u φ_V(u) du = √(2V/π) 10 w¹⁹ e^(−w²⁰) dw
 // (the factor √(2V/π) is applied per pair). Gauss–Legendre on [0, 0.9] and [0.9, 1.3] (e^(−w²⁰) < 1e-80
 // beyond 1.3 even with the u⁸ of the fourth moment); the panels split the steep fall of e^(−w²⁰) from the
-// w¹⁹ rise. 32 + 48 nodes reproduce the closed forms to ~1e-14 (tests/theory/test_sonine_quadrature.cpp).
-GaussRule make_speed_rule() {
+// w¹⁹ rise. 32 + 48 nodes reproduce the closed forms to ~1e-14 (tests/theory/test_sonine_quadrature.cpp); `total`
+// nodes in that proportion (2/5 and 3/5).
+GaussRule make_speed_rule(std::size_t total) {
   GaussRule r;  // x = w¹⁰ = u/√(2V) at the nodes; weight includes 10 w¹⁹ e^(−w²⁰)
   const double edges[] = {0.0, 0.9, 1.3};
-  const std::size_t nodes[] = {32, 48};
+  const std::size_t nodes[] = {total * 2 / 5, total - total * 2 / 5};
   for (std::size_t p = 0; p < 2; ++p) {
     gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(nodes[p]);
     if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
@@ -77,9 +78,12 @@ GaussRule golub_welsch(std::size_t n, bool laguerre) {
   return r;
 }
 
-const GaussRule& impact_speed_rule() {
-  static const GaussRule rule = make_speed_rule();
-  return rule;
+const GaussRule& impact_speed_rule(std::size_t nodes) {
+  static const GaussRule coarse = make_speed_rule(40), fine = make_speed_rule(80), finer = make_speed_rule(160);  // built once, thread-safe
+  if (nodes == 80) return fine;
+  if (nodes == 40) return coarse;
+  if (nodes == 160) return finer;
+  throw std::invalid_argument("impact-speed rule: no rule of " + std::to_string(nodes) + " nodes (40, 80 or 160)");
 }
 
 namespace {

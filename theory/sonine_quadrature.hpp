@@ -33,7 +33,9 @@ struct GaussRule {
 // (the eigen-decomposition of the recurrence's Jacobi matrix).
 GaussRule golub_welsch(std::size_t n, bool laguerre);
 // ∫₀^∞ u φ_V(u) g(u) du ≈ √(2V/π) Σ_n weight_n g(√(2V) x_n), φ_V the N(0, V) density (the rule below).
-const GaussRule& impact_speed_rule();
+// nodes: 80 (the closed forms to ~1e-14; the tracer problem's pair sources to 1.8e-7 of 160 nodes', where 40 err by
+// 2.7e-2: tests/theory/test_tracer_diffusion_galerkin.cpp), 40 or 160 (that test's).
+const GaussRule& impact_speed_rule(std::size_t nodes = 80);
 // The same integral for an integrand smooth in u (constant ε): the Gauss rule of the weight x e^(−x²) on [0, ∞),
 // n nodes, exact to degree 2n − 1 in x (the impact-speed rule above is built for ε(u) ∝ u^(1/5) instead); n one of
 // half_range_rule_sizes, each built once.

@@ -58,6 +58,9 @@ struct RadialBasis {
   // budget: 5e-5); v1 Fig. 8's 43 species at their settled ratios: ≤ 1.7e-11 of each species' operator (24 nodes:
   // 3e-13; 12 nodes: 1.6e-5). tests/theory/test_tracer_diffusion_galerkin.cpp. (24 nodes before 2026-12-06.)
   std::size_t speed_points = 16;
+  // The impact speed's rule for a viscoelastic ε(u) (impact_speed_rule): 80 nodes, converged (160 move a pair source by
+  // ≤ 1.8e-7 of its largest entry; 40 by 2.7e-2).
+  std::size_t impact_points = 80;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
