@@ -79,10 +79,19 @@ GaussRule golub_welsch(std::size_t n, bool laguerre) {
 }
 
 const GaussRule& impact_speed_rule(std::size_t nodes) {
-  static const GaussRule coarse = make_speed_rule(40), fine = make_speed_rule(80), finer = make_speed_rule(160);  // built once, thread-safe
-  if (nodes == 80) return fine;
-  if (nodes == 40) return coarse;
-  if (nodes == 160) return finer;
+  // Each built on first use (thread-safe static initialisation): the 40- and 160-node rules serve one test only.
+  if (nodes == 80) {
+    static const GaussRule fine = make_speed_rule(80);
+    return fine;
+  }
+  if (nodes == 40) {
+    static const GaussRule coarse = make_speed_rule(40);
+    return coarse;
+  }
+  if (nodes == 160) {
+    static const GaussRule finer = make_speed_rule(160);
+    return finer;
+  }
   throw std::invalid_argument("impact-speed rule: no rule of " + std::to_string(nodes) + " nodes (40, 80 or 160)");
 }
 

@@ -39,6 +39,25 @@ Settled fig05(double eps) {
   return {std::move(r), std::move(T)};
 }
 
+// The three partner-shape sources (Maxwellian, a₂, a₃) of the pair (k, i) under basis b's pair rules, the tracer at
+// θ_k and the partner at ρθ_k (add_pair_collisions, the pair tables' own call).
+using Sources = std::array<Eigen::MatrixXd, 3>;
+Sources pair_sources(const CollisionRates& r, std::size_t k, std::size_t i, double theta_k, double rho, const RadialBasis& b) {
+  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
+  Sources G;
+  for (auto& g : G) g = Eigen::MatrixXd::Zero(Eigen::Index(b.size), Eigen::Index(b.size));
+  add_pair_collisions(r, k, i, theta_k, theta_k * rho, b, 2.0, shapes, 3, G.data());
+  return G;
+}
+
+// The largest entry of A − B over the largest entry of the reference B (all three sources).
+double source_difference(const Sources& A, const Sources& B) {
+  double scale = 0.0, diff = 0.0;
+  for (const auto& g : B) scale = std::max(scale, g.cwiseAbs().maxCoeff());
+  for (std::size_t j = 0; j < 3; ++j) diff = std::max(diff, (A[j] - B[j]).cwiseAbs().maxCoeff());
+  return diff / scale;
+}
+
 }  // namespace
 
 TEST_CASE("tracer Galerkin: the Sonine basis under the Maxwellian weight is D[M] of the closed forms, M = 1 ... 5", "[theory]") {
@@ -166,7 +185,6 @@ TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x
   // one step too coarse (20 × 12 at x₀ = 4.3: 3.9e-4) fails.
   CHECK(collision_weighted_basis(8, 1.49).hermite_points == 60);
   CHECK(collision_weighted_basis(8, 3.99).hermite_points == 40);
-  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   for (double m : {5.0, 12.0, 200.0}) {
     const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {m, std::cbrt(m), 0.1}}, 0.5);
     const std::vector<double> T0 = {1.0, 1.0};
@@ -177,10 +195,8 @@ TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x
     fine.hermite_points = 60, fine.laguerre_points = 36;
     coarser.hermite_points = 20, coarser.laguerre_points = 12;
     const Eigen::MatrixXd Phi = m_orthonormal_basis(galerkin_averages(coarse, 2.0).M);
-    auto sources = [&](const RadialBasis& b, std::size_t i, double rho) {
-      std::array<Eigen::MatrixXd, 3> G;
-      for (auto& g : G) g = Eigen::MatrixXd::Zero(8, 8);
-      add_pair_collisions(r, 1, i, 0.5, 0.5 * rho, b, 2.0, shapes, 3, G.data());
+    auto sources = [&](const RadialBasis& b, std::size_t i, double rho) {  // in M-orthonormal coordinates
+      Sources G = pair_sources(r, 1, i, 0.5, rho, b);
       for (auto& g : G) g = Phi.transpose() * g * Phi;
       return G;
     };
@@ -188,13 +204,9 @@ TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x
     for (std::size_t i = 0; i < 2; ++i)
       for (double f : {std::exp(-4.0), 1.0, std::exp(4.0)}) {
         const double rho = f * (i == 0 ? m : 1.0);  // θ_i/θ_k at equal temperatures, times f
-        const auto A = sources(coarse, i, rho), B = sources(fine, i, rho), C = sources(coarser, i, rho);
-        double scale = 0.0;
-        for (const auto& b : B) scale = std::max(scale, b.cwiseAbs().maxCoeff());
-        for (std::size_t j = 0; j < 3; ++j) {
-          err = std::max(err, (A[j] - B[j]).cwiseAbs().maxCoeff() / scale);
-          err_coarser = std::max(err_coarser, (C[j] - B[j]).cwiseAbs().maxCoeff() / scale);
-        }
+        const Sources B = sources(fine, i, rho);
+        err = std::max(err, source_difference(sources(coarse, i, rho), B));
+        err_coarser = std::max(err_coarser, source_difference(sources(coarser, i, rho), B));
       }
     std::printf("pair rule at x0 = %.2f: %.1e of the largest entry (20 x 12: %.1e)\n", x0, err, err_coarser);
     INFO("m = " << m << ", x0 = " << x0);
@@ -210,7 +222,6 @@ TEST_CASE("tracer Galerkin: the impact speed's 16-node rule at constant eps is w
   // 32 nodes, in units of the node's largest entry. Measured: ≤ 5.1e-10 where the partner is not hotter than at the
   // start; 6.3e-6 at worst (the light species of 1:12 with its heavy partner e⁴ times hotter; 24 nodes: 5.6e-7), below
   // the W × |v_⊥|² tiers' own budget (5e-5, the test above). 12 nodes: 1.8e-3 (fails both).
-  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   double worst16 = 0.0, worst16_cool = 0.0, worst12 = 0.0;
   for (double m : {5.0, 12.0, 100.0, 200.0}) {
     const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {m, std::cbrt(m), 0.1}}, 0.5);
@@ -220,24 +231,14 @@ TEST_CASE("tracer Galerkin: the impact speed's 16-node rule at constant eps is w
       REQUIRE(b16.speed_points == 16);
       RadialBasis b32 = b16, b12 = b16;
       b32.speed_points = 32, b12.speed_points = 12;
-      auto sources = [&](const RadialBasis& b, std::size_t i, double rho) {
-        std::array<Eigen::MatrixXd, 3> G;
-        for (auto& g : G) g = Eigen::MatrixXd::Zero(8, 8);
-        add_pair_collisions(r, k, i, 0.5, 0.5 * rho, b, 2.0, shapes, 3, G.data());
-        return G;
-      };
       for (std::size_t i = 0; i < 2; ++i)
         for (double f : {std::exp(-4.0), 1.0, std::exp(4.0)}) {
           const double rho = f * r.mixture()[k].mass / r.mixture()[i].mass;  // θ_i/θ_k at equal temperatures, times f
-          const auto A = sources(b16, i, rho), B = sources(b32, i, rho), C = sources(b12, i, rho);
-          double scale = 0.0;
-          for (const auto& g : B) scale = std::max(scale, g.cwiseAbs().maxCoeff());
-          for (std::size_t j = 0; j < 3; ++j) {
-            const double e16 = (A[j] - B[j]).cwiseAbs().maxCoeff() / scale;
-            worst16 = std::max(worst16, e16);
-            if (f <= 1.0) worst16_cool = std::max(worst16_cool, e16);
-            worst12 = std::max(worst12, (C[j] - B[j]).cwiseAbs().maxCoeff() / scale);
-          }
+          const Sources B = pair_sources(r, k, i, 0.5, rho, b32);
+          const double e16 = source_difference(pair_sources(r, k, i, 0.5, rho, b16), B);
+          worst16 = std::max(worst16, e16);
+          if (f <= 1.0) worst16_cool = std::max(worst16_cool, e16);
+          worst12 = std::max(worst12, source_difference(pair_sources(r, k, i, 0.5, rho, b12), B));
         }
     }
   }
@@ -256,7 +257,6 @@ TEST_CASE("tracer Galerkin: a viscoelastic pair's 80-node impact-speed rule is c
   // times that, against 160 nodes, in units of the node's largest entry. Measured: 80 nodes 1.8e-7 (the W × |v_⊥|²
   // tiers' budget is 5e-5); 40 nodes 2.7e-2 — the rule cannot be halved as the constant-ε one was (16 of 24 nodes).
   const CollisionRates r = test::viscoelastic_rates(test::bo_ternary(), 0.09);
-  const PartnerShape shapes[3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}};
   const std::vector<double> T0 = {1.0, 1.0, 1.0};
   double worst80 = 0.0, worst40 = 0.0;
   for (std::size_t k = 0; k < 3; ++k) {
@@ -268,19 +268,9 @@ TEST_CASE("tracer Galerkin: a viscoelastic pair's 80-node impact-speed rule is c
       for (double theta : {1.0, 1e-4})
         for (double f : {1.0, std::exp(4.0)}) {
           const double rho = f * r.mixture()[k].mass / r.mixture()[i].mass;
-          auto sources = [&](const RadialBasis& b) {
-            std::array<Eigen::MatrixXd, 3> G;
-            for (auto& g : G) g = Eigen::MatrixXd::Zero(8, 8);
-            add_pair_collisions(r, k, i, theta, theta * rho, b, 2.0, shapes, 3, G.data());
-            return G;
-          };
-          const auto A = sources(b80), B = sources(b160), C = sources(b40);
-          double scale = 0.0;
-          for (const auto& g : B) scale = std::max(scale, g.cwiseAbs().maxCoeff());
-          for (std::size_t j = 0; j < 3; ++j) {
-            worst80 = std::max(worst80, (A[j] - B[j]).cwiseAbs().maxCoeff() / scale);
-            worst40 = std::max(worst40, (C[j] - B[j]).cwiseAbs().maxCoeff() / scale);
-          }
+          const Sources B = pair_sources(r, k, i, theta, rho, b160);
+          worst80 = std::max(worst80, source_difference(pair_sources(r, k, i, theta, rho, b80), B));
+          worst40 = std::max(worst40, source_difference(pair_sources(r, k, i, theta, rho, b40), B));
         }
   }
   std::printf("viscoelastic impact-speed rule against 160 nodes: 80 nodes %.1e, 40 nodes %.1e of the largest entry\n", worst80, worst40);
