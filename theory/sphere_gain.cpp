@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <memory>
 #include <mutex>
 
 namespace granmix::theory {
@@ -56,42 +57,24 @@ const SphereGain::Terms& SphereGain::terms(std::size_t nb) {
   return built.emplace(nb, std::move(t)).first->second;
 }
 
-SphereGain::SphereGain(std::size_t nb, double h) : h_(h), nb_(nb), gain_(nb + 3), sums_(3 * nb * powers), terms_(terms(nb)) {}
+SphereGain::SphereGain(std::size_t nb, double h)
+    : h_(h), inv_h_(1.0 / h), nb_(nb), gain_(nb + 3), storage_(3 * nb * stride + stride), terms_(terms(nb)) {
+  void* start = storage_.data();
+  std::size_t space = storage_.size() * sizeof(double);
+  sums_ = static_cast<double*>(std::align(stride * sizeof(double), 3 * nb * stride * sizeof(double), start, space));
+}
 
 void SphereGain::clear() {
   std::fill(gain_.begin(), gain_.end(), 0.0);
   for (std::size_t p = 0; p < 3; ++p) {
     if (!used_[p]) continue;
-    std::fill_n(sums_.begin() + std::ptrdiff_t(p * nb_ * powers), nb_ * powers, 0.0);
+    std::fill_n(sums_ + p * nb_ * stride, nb_ * stride, 0.0);
   }
   used_ = {};
 }
 
-// One end x = s/h of a range, a_p = ±h^(p+1) W_p: interval q's power sums (n ≤ p + 4 reach the splines).
-void SphereGain::add_end(double x, const std::array<double, 3>& a) {
-  const std::size_t q = std::min(std::size_t(x), nb_ - 1);
-  const double t = x - double(q);
-  double tn[powers];
-  tn[0] = 1.0;
-  for (std::size_t n = 1; n < powers; ++n) tn[n] = tn[n - 1] * t;
-  for (std::size_t p = 0; p < 3; ++p) {
-    if (a[p] == 0.0) continue;
-    double* s = sums_.data() + (p * nb_ + q) * powers;
-    for (std::size_t n = 0; n < p + 5; ++n) s[n] += a[p] * tn[n];
-  }
-}
-
-void SphereGain::add_range(double s_lo, double s_hi, const std::array<double, 3>& W) {
-  const double x_lo = s_lo / h_, x_hi = std::min(s_hi / h_, double(nb_));  // beyond: only the dropped entries
-  if (x_lo >= x_hi) return;
-  const std::array<double, 3> a = {h_ * W[0], h_ * h_ * W[1], h_ * h_ * h_ * W[2]};
-  for (std::size_t p = 0; p < 3; ++p) used_[p] = used_[p] || a[p] != 0.0;
-  add_end(x_hi, a);
-  add_end(x_lo, {-a[0], -a[1], -a[2]});
-}
-
 void SphereGain::add_point(double s, double weight) {
-  const double x = s / h_;
+  const double x = s * inv_h_;
   const auto j0 = std::size_t(x);
   if (j0 >= nb_) return;
   double N[4];
@@ -102,11 +85,11 @@ void SphereGain::add_point(double s, double weight) {
 std::vector<double>& SphereGain::finish() {
   for (std::size_t p = 0; p < 3; ++p) {
     if (!used_[p]) continue;
-    const double* sums = sums_.data() + p * nb_ * powers;
+    const double* sums = sums_ + p * nb_ * stride;
     double passed = 0.0;  // Σ of the ends' weights in the intervals above m (their t⁰ sums): spline m wholly passed
-    for (std::size_t m = nb_ - 1; m-- > 0;) passed += sums[(m + 1) * powers], gain_[m] += passed * terms_.whole[m][p];
+    for (std::size_t m = nb_ - 1; m-- > 0;) passed += sums[(m + 1) * stride], gain_[m] += passed * terms_.whole[m][p];
     for (std::size_t q = 0; q < nb_; ++q) {
-      const double* s = sums_.data() + (p * nb_ + q) * powers;
+      const double* s = sums + q * stride;
       const double* c = terms_.interval.data() + (p * nb_ + q) * 4 * powers;
       for (std::size_t e = 0; e < 4; ++e, c += powers) {
         double sum = 0.0;

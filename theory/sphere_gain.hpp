@@ -13,6 +13,7 @@
 // tabulated once per grid size. Until 2026-12-05 each collision evaluated the moment polynomials at both of its ends:
 // the same numbers to rounding (tests/theory/test_sphere_gain.cpp), v1 Fig. 7's judged level 7.4 → 6.4 s of CPU (means
 // of three runs, one thread; the assembly is ~60% of it).
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -23,6 +24,8 @@ class SphereGain {
  public:
   // nb splines N_m(s) = spline(s/h − m + 3) (tracer_speed_grid.cpp), m = 0 … nb − 1.
   SphereGain(std::size_t nb, double h);
+  SphereGain(const SphereGain&) = delete;  // sums_ points into storage_
+  SphereGain& operator=(const SphereGain&) = delete;
   void clear();
   // Adds Σ_p W[p] ∫ N_m(s) sᵖ ds over s ∈ [s_lo, s_hi]; beyond the last spline's support the gain leaves the grid.
   void add_range(double s_lo, double s_hi, const std::array<double, 3>& W);
@@ -34,14 +37,19 @@ class SphereGain {
 
   // tⁿ, n = 0 … 6: ∫₀ᵗ τʲ N_e(τ) dτ has degree ≤ j + 4 ≤ 6; n = 0 carries the spline's intervals below the end's.
   static constexpr std::size_t powers = 7;
+  // An interval's power sums are stored 8 apart and every end adds all 8 (the 8th, and a low p's top terms, are never
+  // read): same-width aligned vector adds, so an end landing in the interval of the one before reads its sums straight
+  // from the store buffer (the 7-wide mix of vector and scalar adds stalled there: half of add_end's time, v1 Fig. 7).
+  static constexpr std::size_t stride = 8;
 
  private:
   void add_end(double x, const std::array<double, 3>& a);
 
-  double h_;
+  double h_, inv_h_;
   std::size_t nb_;
   std::vector<double> gain_;   // three entries past the last spline: a speed in the last knot interval reaches them
-  std::vector<double> sums_;   // [p][q][n]: Σ over the ends in interval q of ±h^(p+1) W_p tⁿ
+  std::vector<double> storage_;  // sums_ and up to 7 doubles before it: sums_ starts a 64-byte line
+  double* sums_;                 // [p][q][n], n < stride: Σ over the ends in interval q of ±h^(p+1) W_p tⁿ
   std::array<bool, 3> used_{};  // the powers p added since clear()
   struct Terms {
     std::vector<double> interval;              // [p][q][e][n]: F of spline q + e at t in interval q = Σ_n interval tⁿ
@@ -50,5 +58,29 @@ class SphereGain {
   static const Terms& terms(std::size_t nb);
   const Terms& terms_;
 };
+
+// add_range and add_end are inline: an assembly calls them ~10⁸ times, and a call passes W through memory, where its
+// loads waited on the caller's separate stores (a third of add_range's time, v1 Fig. 7).
+// One end x = s/h of a range, a_p = ±h^(p+1) W_p: interval q's power sums (n ≤ p + 4 reach the splines).
+inline void SphereGain::add_end(double x, const std::array<double, 3>& a) {
+  const std::size_t q = std::min(std::size_t(x), nb_ - 1);
+  const double t = x - double(q);
+  const double t2 = t * t, t4 = t2 * t2;
+  alignas(64) const double tn[stride] = {1.0, t, t2, t2 * t, t4, t4 * t, t4 * t2, t4 * t2 * t};
+  for (std::size_t p = 0; p < 3; ++p) {
+    if (a[p] == 0.0) continue;
+    double* s = static_cast<double*>(__builtin_assume_aligned(sums_ + (p * nb_ + q) * stride, 64));
+    for (std::size_t n = 0; n < stride; ++n) s[n] += a[p] * tn[n];
+  }
+}
+
+inline void SphereGain::add_range(double s_lo, double s_hi, const std::array<double, 3>& W) {
+  const double x_lo = s_lo * inv_h_, x_hi = std::min(s_hi * inv_h_, double(nb_));  // beyond: only the dropped entries
+  if (x_lo >= x_hi) return;
+  const std::array<double, 3> a = {h_ * W[0], h_ * h_ * W[1], h_ * h_ * h_ * W[2]};
+  for (std::size_t p = 0; p < 3; ++p) used_[p] = used_[p] || a[p] != 0.0;
+  add_end(x_hi, a);
+  add_end(x_lo, {-a[0], -a[1], -a[2]});
+}
 
 }  // namespace granmix::theory

@@ -72,45 +72,73 @@ std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& r
 // alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
 // velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
 // velocity, so it is subtracted once per u.
+// Each gas node's collision sphere at one u, one array per field: the first loop over the nodes has no branch and no
+// scattered store, so the compiler runs it on vector registers (square roots and divisions two at a time); the second
+// adds the ranges to the gains. (One loop doing both: the assembly's per-node arithmetic was ~half of v1 Fig. 7's
+// judged level.)
+struct Spheres {
+  std::vector<double> lo, hi, total, speed_w, l1_w0, l1_w2, l1_point;
+  explicit Spheres(std::size_t n, bool full) : lo(n), hi(n), total(n), speed_w(n), l1_w0(full ? n : 0), l1_w2(full ? n : 0), l1_point(full ? n : 0) {}
+};
+
+// Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
+// blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
+// alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
+// velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
+// velocity, so it is subtracted once per u.
 template <bool full>
 void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll,
               Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
   const GaussRule& uq = speed_rule();
-  const std::size_t nb = std::size_t(coll.rows());
+  const std::size_t nb = std::size_t(coll.rows()), nodes = gas.size();
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
+  Spheres sp(nodes, full);
+  double* __restrict lo = sp.lo.data();
+  double* __restrict hi = sp.hi.data();
+  double* __restrict total_of = sp.total.data();
+  double* __restrict speed_w = sp.speed_w.data();
+  double* __restrict l1_w0 = sp.l1_w0.data();
+  double* __restrict l1_w2 = sp.l1_w2.data();
+  double* __restrict l1_point = sp.l1_point.data();
+  const double beta = p.beta, mass_ratio = p.m2 / p.m1, pi = std::numbers::pi;
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
     // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]; G(u), H(u) the same average of the gas's energy gain and of u·Δv.
     gain.clear();
     if constexpr (full) gain1.clear();
     double G = 0.0, H = 0.0, G4 = 0.0, lost = 0.0;
-    for (const GasNode& node : gas) {
-      const double w_x = node.w_x, w_z = node.w_z;
+    for (std::size_t a = 0; a < nodes; ++a) {
+      const double w_x = gas[a].w_x, w_z = gas[a].w_z;
       const double gx = -w_x, gz = u - w_z, g = std::sqrt(gx * gx + gz * gz);
-      if (g == 0.0) continue;
-      const double total = node.weight * g * std::numbers::pi;  // ∫(g·σ̂)Θ dσ̂ = πg
+      const double total = gas[a].weight * g * pi;  // ∫(g·σ̂)Θ dσ̂ = πg (0 where g = 0: no collision)
       lost += total;
-      // The sphere of v′ (v along z): centre c = v − βg/2, radius R = βg/2.
-      const double R = 0.5 * p.beta * g, cx = -0.5 * p.beta * gx, cz = u - 0.5 * p.beta * gz, c = std::sqrt(cx * cx + cz * cz);
-      if (2.0 * std::min(c, R) < 1e-9 * h) {  // a point: |v′| = |c| + R, ⟨v′_z⟩ = c_z
-        gain.add_point(c + R, total);
-        if constexpr (full) gain1.add_point(c + R, total * cz / (c + R));
-      } else {
-        gain.add_range(std::abs(c - R), c + R, {0.0, total / (2.0 * c * R), 0.0});
-        // ⟨v̂·v̂′⟩ on the circle |v′| = s: (ĉ_z)(s² + |c|² − R²)/(2|c|s); with the density s/(2|c|R):
-        if constexpr (full) {
-          const double A = total * (cz / c) / (4.0 * c * c * R);
-          gain1.add_range(std::abs(c - R), c + R, {A * (c * c - R * R), 0.0, A});
-        }
-      }
+      // The sphere of v′ (v along z): centre c = v − βg/2, radius R = βg/2. The speed density's weight
+      // total/(2|c|R) = weight π/(β|c|).
+      const double R = 0.5 * beta * g, cx = -0.5 * beta * gx, cz = u - 0.5 * beta * gz, c = std::sqrt(cx * cx + cz * cz);
+      lo[a] = std::abs(c - R), hi[a] = c + R, total_of[a] = total, speed_w[a] = total / (2.0 * c * R);
       if constexpr (full) {
+        // ⟨v̂·v̂′⟩ on the circle |v′| = s: (ĉ_z)(s² + |c|² − R²)/(2|c|s); with the density s/(2|c|R). A point sphere:
+        // ⟨v′_z⟩ = c_z at |v′| = |c| + R.
+        const double A = total * (cz / c) / (4.0 * c * c * R);
+        l1_w0[a] = A * (c * c - R * R), l1_w2[a] = A, l1_point[a] = total * cz / (c + R);
         // v′ − v = R(n − ĝ) and the gas's w′ − w = κ(ĝ − n), κ = (m₂/m₁)R, n uniform on the unit sphere:
         // ⟨Δv_z⟩ = −R ĝ_z; ⟨|w′|² − |w|²⟩ = 2κ w·ĝ + 2κ²; ⟨(|w′|² − |w|²)²⟩ = that² + (4/3)κ²|w + κĝ|².
-        const double kappa = p.m2 / p.m1 * R, w_g = (w_x * gx + w_z * gz) / g, dw2 = 2.0 * kappa * (w_g + kappa);
-        const double bx = w_x + kappa * gx / g, bz = w_z + kappa * gz / g, ww = w_x * w_x + w_z * w_z;
-        H += total * (-u * R * gz / g);
+        const double inv_g = 1.0 / (g > 0.0 ? g : 1.0);  // g = 0: total = 0 and every term with it
+        const double kappa = mass_ratio * R, w_g = (w_x * gx + w_z * gz) * inv_g, dw2 = 2.0 * kappa * (w_g + kappa);
+        const double bx = w_x + kappa * gx * inv_g, bz = w_z + kappa * gz * inv_g, ww = w_x * w_x + w_z * w_z;
+        H += total * (-u * R * gz * inv_g);
         G += total * 0.5 * p.m1 * dw2;
         G4 += total * (2.0 * ww * dw2 + dw2 * dw2 + 4.0 / 3.0 * kappa * kappa * (bx * bx + bz * bz));
+      }
+    }
+    for (std::size_t a = 0; a < nodes; ++a) {
+      if (total_of[a] == 0.0) continue;
+      if (hi[a] - lo[a] < 2e-9 * h) {  // 2 min(|c|, R): the sphere is a point
+        gain.add_point(hi[a], total_of[a]);
+        if constexpr (full) gain1.add_point(hi[a], l1_point[a]);
+      } else {
+        gain.add_range(lo[a], hi[a], {0.0, speed_w[a], 0.0});
+        if constexpr (full) gain1.add_range(lo[a], hi[a], {l1_w0[a], 0.0, l1_w2[a]});
       }
     }
     std::vector<double>& C = gain.finish();
