@@ -59,8 +59,7 @@ class SphereGain {
   const Terms& terms_;
 };
 
-// add_range and add_end are inline: an assembly calls them ~10⁸ times, and a call passes W through memory, where its
-// loads waited on the caller's separate stores (a third of add_range's time, v1 Fig. 7).
+// add_range and add_end are inline: the speed grid's innermost loop calls them, twice per gas node and speed.
 // One end x = s/h of a range, a_p = ±h^(p+1) W_p: interval q's power sums (n ≤ p + 4 reach the splines).
 inline void SphereGain::add_end(double x, const std::array<double, 3>& a) {
   const std::size_t q = std::min(std::size_t(x), nb_ - 1);
