@@ -74,17 +74,29 @@ void SpeedGridCooling::rates(const double* T, const double* z, double* xi, doubl
     const SpeedMoments m = moments(j, z);
     a2_[Eigen::Index(j)] = m.a2, a3_[Eigen::Index(j)] = partner_order_ == 3 ? m.a3 : 0.0;
   }
+  const bool same_T = products_T_.size() == N_ && std::equal(T, T + N_, products_T_.begin());
+  if (!same_T) products_T_.assign(T, T + N_), products_.resize(N_ * N_);
+  const std::vector<double> cached_z = same_T ? std::move(products_z_) : std::vector<double>{};
+  products_z_.clear();  // until this call's products are all made (a throw below leaves nothing to reuse)
+  const std::size_t shapes = partner_order_ == 3 ? 3 : 2;
   for (std::size_t k = 0; k < N_; ++k) {
     const Eigen::Map<const Eigen::VectorXd> P(z + k * nb_, Eigen::Index(nb_));
+    const bool same_P = !cached_z.empty() && std::equal(z + k * nb_, z + (k + 1) * nb_, cached_z.begin() + std::ptrdiff_t(k * nb_));
+    if (!same_P)
+      for (std::size_t j = 0; j < N_; ++j) {
+        const CatmullRom r = catmull_rom(std::log(T[j] / T[k]) / step_, "speed-grid temperatures: temperature ratio");
+        std::array<Eigen::VectorXd, 3>& v = products_[k * N_ + j];
+        for (std::size_t q = 0; q < shapes; ++q) v[q].setZero(Eigen::Index(nb_));
+        for (int n = 0; n < r.count; ++n) {
+          const Sources& s = node(k, j, r.first + n);
+          for (std::size_t q = 0; q < shapes; ++q) v[q].noalias() += r.w[n] * (s[q] * P);
+        }
+      }
     work_.setZero(Eigen::Index(nb_));
     for (std::size_t j = 0; j < N_; ++j) {
-      const CatmullRom r = catmull_rom(std::log(T[j] / T[k]) / step_, "speed-grid temperatures: temperature ratio");
+      const std::array<Eigen::VectorXd, 3>& v = products_[k * N_ + j];
       const double shape[3] = {1.0, a2_[Eigen::Index(j)], a3_[Eigen::Index(j)]};
-      for (int n = 0; n < r.count; ++n) {
-        const Sources& s = node(k, j, r.first + n);
-        for (std::size_t q = 0; q < 3; ++q)
-          if (shape[q] != 0.0) work_.noalias() += (r.w[n] * shape[q]) * (s[q] * P);
-      }
+      for (std::size_t q = 0; q < shapes; ++q) work_.noalias() += shape[q] * v[q];
     }
     const double scale = std::sqrt(T[k]);
     Eigen::VectorXd drift = grids_[k].drift * P;
@@ -97,6 +109,7 @@ void SpeedGridCooling::rates(const double* T, const double* z, double* xi, doubl
     const Eigen::VectorXd rhs = scale * work_ + 0.5 * xi[k] * drift;
     Eigen::Map<Eigen::VectorXd>(dz_dt + k * nb_, Eigen::Index(nb_)) = gram_[k].solve(rhs);
   }
+  products_z_.assign(z, z + N_ * nb_);
 }
 
 bool SpeedGridCooling::cumulants(const double*, const double* z, double* c) const {

@@ -86,6 +86,11 @@ class SpeedGridCooling final : public CoolingModel {
   std::vector<double> z0_;
   mutable std::vector<std::map<long, Sources>> tables_;  // per pair k·N + j: ln ρ node ↦ sources
   mutable Eigen::VectorXd a2_, a3_, work_;
+  // Each pair's shape products Σ_n w_n C_kj,q(node n) P_k (q = 1, S₂, S₃) at the T and P_k of the last call: a
+  // difference-quotient Jacobian column moves one species' P_k alone, so only that species' N pairs are redone (not
+  // N²); the right-hand side is the same sum either way, so the numbers do not depend on what was cached.
+  mutable std::vector<std::array<Eigen::VectorXd, 3>> products_;
+  mutable std::vector<double> products_T_, products_z_;
 };
 
 }  // namespace granmix::theory

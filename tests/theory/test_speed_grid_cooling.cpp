@@ -65,6 +65,41 @@ TEST_CASE("speed-grid temperatures: at the Maxwellian start the rates of T and a
   CHECK(moved > 0.1);  // the check has something to compare (da₂/dt 0.14, 0.0026, 0.14)
 }
 
+TEST_CASE("speed-grid temperatures: the right-hand side is the same whether a species' pair products were reused", "[theory]") {
+  // A difference-quotient Jacobian column moves one species' density alone: rates() then redoes only that species' pair
+  // products and reuses the others' (speed_grid_cooling.hpp). Each call must equal a fresh model's, bit for bit — after a
+  // change of one species' density, of another's, and of a temperature (everything redone).
+  const CollisionRates rates = test::constant_rates(test::bo_ternary(), 0.5);
+  const std::size_t N = rates.size();
+  const SpeedGridCooling warm(rates);
+  const std::size_t n = warm.state_size(), nb = n / N;
+  std::vector<double> z(n), atol(n), T = {0.3, 1.0, 2.5};
+  warm.initial_state(T.data(), 1e-9, z.data(), atol.data());
+  std::vector<double> xi(N), dz(n), xi_fresh(N), dz_fresh(n);
+  warm.rates(T.data(), z.data(), xi.data(), dz.data());  // fills the cache
+  const auto same_as_fresh = [&](const std::vector<double>& Tc, const std::vector<double>& zc) {
+    warm.rates(Tc.data(), zc.data(), xi.data(), dz.data());
+    const SpeedGridCooling fresh(rates);
+    fresh.rates(Tc.data(), zc.data(), xi_fresh.data(), dz_fresh.data());
+    return xi == xi_fresh && dz == dz_fresh;
+  };
+  std::vector<double> z1 = z;
+  z1[1 * nb + 7] *= 1.0 + 1e-6;  // species 2's density alone (its a2, a3 change too: every species' rows move)
+  CHECK(same_as_fresh(T, z1));
+  std::vector<double> z2 = z1;
+  z2[0 * nb + 3] *= 1.0 - 1e-6;  // then species 1's
+  CHECK(same_as_fresh(T, z2));
+  std::vector<double> T2 = T;
+  T2[2] *= 1.0 + 1e-6;  // a temperature: every pair's interpolation weights
+  CHECK(same_as_fresh(T2, z2));
+  CHECK(same_as_fresh(T, z));  // back to the start
+  // The check discriminates: the perturbed species' rows do move.
+  warm.rates(T.data(), z.data(), xi.data(), dz.data());
+  std::vector<double> dz1(n), xi1(N);
+  warm.rates(T.data(), z1.data(), xi1.data(), dz1.data());
+  CHECK(dz1 != dz);
+}
+
 TEST_CASE("speed-grid temperatures: a mixture settles at the converged HCS (v1 Figs. 2, 6)", "[theory]") {
   // The history from equal Maxwellian temperatures to t = 1e8 (ten thousand Haff times) against converged_hcs: the same
   // truncation (partners through a₂, a₃) on the same splines, but stationary (a secant in ζ per species, quasi-Newton
