@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <iterator>
 #include <numbers>
 #include <stdexcept>
@@ -78,21 +79,39 @@ GaussRule golub_welsch(std::size_t n, bool laguerre) {
   return r;
 }
 
+namespace {
+
+// A fixed set of rule sizes, each rule built on its first use (thread-safe: one std::call_once per size), so sizes
+// that only a test asks for cost nothing elsewhere. Shared by the impact-speed and the half-range rules.
+class RulesBySize {
+ public:
+  RulesBySize(std::vector<std::size_t> sizes, GaussRule (*make)(std::size_t), std::string name)
+      : sizes_(std::move(sizes)), make_(make), name_(std::move(name)), rules_(sizes_.size()), once_(sizes_.size()) {}
+  const GaussRule& operator()(std::size_t n) {
+    for (std::size_t j = 0; j < sizes_.size(); ++j)
+      if (sizes_[j] == n) {
+        std::call_once(once_[j], [&] { rules_[j] = make_(n); });
+        return rules_[j];
+      }
+    std::string allowed;
+    for (std::size_t j = 0; j < sizes_.size(); ++j)
+      allowed += (j == 0 ? "" : j + 1 == sizes_.size() ? " or " : ", ") + std::to_string(sizes_[j]);
+    throw std::invalid_argument(name_ + ": no rule of " + std::to_string(n) + " nodes (" + allowed + ")");
+  }
+
+ private:
+  std::vector<std::size_t> sizes_;
+  GaussRule (*make_)(std::size_t);
+  std::string name_;
+  std::vector<GaussRule> rules_;
+  std::vector<std::once_flag> once_;
+};
+
+}  // namespace
+
 const GaussRule& impact_speed_rule(std::size_t nodes) {
-  // Each built on first use (thread-safe static initialisation): the 40- and 160-node rules serve one test only.
-  if (nodes == 80) {
-    static const GaussRule fine = make_speed_rule(80);
-    return fine;
-  }
-  if (nodes == 40) {
-    static const GaussRule coarse = make_speed_rule(40);
-    return coarse;
-  }
-  if (nodes == 160) {
-    static const GaussRule finer = make_speed_rule(160);
-    return finer;
-  }
-  throw std::invalid_argument("impact-speed rule: no rule of " + std::to_string(nodes) + " nodes (40, 80 or 160)");
+  static RulesBySize rules({40, 80, 160}, make_speed_rule, "impact-speed rule");  // 40 and 160: one test's
+  return rules(nodes);
 }
 
 namespace {
@@ -150,14 +169,9 @@ GaussRule make_half_range_rule(std::size_t n) {
 }  // namespace
 
 const GaussRule& half_range_rule(std::size_t n) {
-  static const std::vector<GaussRule> rules = [] {  // built once (thread-safe static initialisation)
-    std::vector<GaussRule> r;
-    for (std::size_t size : half_range_rule_sizes) r.push_back(make_half_range_rule(size));
-    return r;
-  }();
-  for (std::size_t j = 0; j < std::size(half_range_rule_sizes); ++j)
-    if (half_range_rule_sizes[j] == n) return rules[j];
-  throw std::invalid_argument("half-range Gauss rule: no rule of " + std::to_string(n) + " nodes (12, 16, 24 or 32)");
+  static RulesBySize rules({std::begin(half_range_rule_sizes), std::end(half_range_rule_sizes)}, make_half_range_rule,
+                           "half-range Gauss rule");
+  return rules(n);
 }
 
 std::size_t sonine_quadrature_nodes() { return impact_speed_rule().x.size(); }

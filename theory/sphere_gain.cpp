@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <stdexcept>
 
 namespace granmix::theory {
 
@@ -62,6 +63,7 @@ SphereGain::SphereGain(std::size_t nb, double h)
   void* start = storage_.data();
   std::size_t space = storage_.size() * sizeof(double);
   sums_ = static_cast<double*>(std::align(stride * sizeof(double), 3 * nb * stride * sizeof(double), start, space));
+  if (sums_ == nullptr) throw std::logic_error("SphereGain: std::align found no 64-byte line in its storage");
 }
 
 void SphereGain::clear() {
