@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 
 #include "equilibrated_solve.hpp"
+#include "parallel_each.hpp"
 #include "sonine_moment_table.hpp"
 #include "term_table.hpp"
 
@@ -83,7 +84,8 @@ void SonineMomentCooling::assemble(const double* T) const {
   const model::Mixture& mix = rates_.mixture();
   constexpr std::size_t A = PM - 1;  // Sonine coefficients a₂ … a_PM per species
   R0_.assign(N_ * PM, 0.0), self_.assign(N_ * PM * A, 0.0), partner_.resize(N_ * N_ * PM * A);
-  for (std::size_t k = 0; k < N_; ++k) {
+  // Each species' rows on one thread (its sums in the same order for any thread count).
+  parallel_each(N_, [&](std::size_t k) {
     for (std::size_t i = 0; i < N_; ++i) {
       const double sigma = mix.sigma(k, i);
       const std::array<double, PM * NS> H =
@@ -96,7 +98,7 @@ void SonineMomentCooling::assemble(const double* T) const {
         }
       }
     }
-  }
+  }, N_ >= parallel_moment_species && terms_->concurrent());
 }
 
 void SonineMomentCooling::initial_state(const double*, double rtol, double* z, double* atol) const {

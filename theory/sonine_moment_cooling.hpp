@@ -35,6 +35,11 @@ SonineMomentRates sonine_moment_pair(double weight, double mu, double eps, doubl
 std::vector<double> sonine_moment_beta_polynomials(double beta);
 SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai);
 
+// From this many species the pair terms of a right-hand side are assembled on OpenMP threads (species by species):
+// ~0.15 µs per pair at constant ε, so 16 species take ~40 µs, well above a fork and join; v1 Fig. 8's 43 species
+// spent ~10% of its judged level's single-thread time here.
+inline constexpr std::size_t parallel_moment_species = 16;
+
 class SonineMomentCooling final : public CoolingModel {
  public:
   // order 2, 3 or 4; z0: the initial unknowns (empty: 0, the Maxwellian start); terms: the pair terms (null: made

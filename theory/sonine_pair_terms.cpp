@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <mutex>
 #include <vector>
 
 #include "sonine_moment_cooling.hpp"
@@ -24,7 +25,7 @@ class ClosedFormTerms final : public SoninePairTerms {
     for (std::size_t j = 0; j < N; ++j) eps[j] = law_.eps(i, j);
     sonine_cross_row(N, w, eps.data(), mu, l.lambda[i], l.sqrt_lambda, l.inv_sqrt_lambda, out);
   }
-  bool concurrent_cross() const override { return true; }
+  bool concurrent() const override { return true; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
                           bool partner_sonine) const override {
     const double eps = law_.eps(k, i), beta = mi / (mi + mk) * (1.0 + eps);
@@ -45,7 +46,7 @@ class ClosedFormTerms final : public SoninePairTerms {
     // The moment table's β polynomials per ordered pair (β fixed within an integration), made on first use.
     const double beta = mi / (mi + mk) * (1.0 + law_.eps(k, i));
     const std::size_t N = law_.size();
-    if (moment_polys_.empty()) moment_polys_.resize(N * N);
+    std::call_once(moment_polys_made_, [&] { moment_polys_.resize(N * N); });  // moments() runs on threads (concurrent)
     BetaPolynomials& cached = moment_polys_[k * N + i];
     if (cached.beta != beta) cached = {beta, 0, 0, sonine_moment_beta_polynomials(beta)};
     return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi);
@@ -72,6 +73,7 @@ class ClosedFormTerms final : public SoninePairTerms {
   const model::Restitution& law_;
   mutable std::vector<BetaPolynomials> polys_;         // per ordered pair (k, i), made on first use
   mutable std::vector<BetaPolynomials> moment_polys_;  // the same for the moment table
+  mutable std::once_flag moment_polys_made_;
 };
 
 class ImpactSpeedTerms final : public SoninePairTerms {
@@ -90,7 +92,7 @@ class ImpactSpeedTerms final : public SoninePairTerms {
       out.Lambda0[j] = m.Lambda0, out.Lambda_self[j] = m.Lambda_self, out.Lambda_cross[j] = m.Lambda_cross;
     }
   }
-  bool concurrent_cross() const override { return false; }
+  bool concurrent() const override { return false; }
   SonineTracerSums tracer(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, std::size_t modes,
                           bool) const override {  // the partner's a₂, a₃ terms exist in closed form only (left zero)
     const double Ak = Tk / mk, Ai = Ti / mi;

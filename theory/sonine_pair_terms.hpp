@@ -31,9 +31,10 @@ class SoninePairTerms {
   // drops it).
   virtual SonineMoments self(std::size_t i, double w, double lambda_i) const = 0;
   virtual void cross_row(std::size_t i, const double* w, const double* mu, const SonineLambdas& l, const SonineRow& out) const = 0;
-  // Whether cross_row() may run on several threads at once (the closed forms: yes; the quadrature shares its per-pair
-  // cache of ε between (i, j) and (j, i): no). SonineSystem::assemble splits its rows over threads when it may.
-  virtual bool concurrent_cross() const = 0;
+  // Whether cross_row() and moments() may run on several threads at once, for distinct i resp. k (the closed forms:
+  // yes; the quadrature shares its per-pair cache of ε between (i, j) and (j, i): no). SonineSystem::assemble and
+  // SonineMomentCooling's assembly split their rows over threads when they may.
+  virtual bool concurrent() const = 0;
   // The tracer problem of k with partner i (weight = n_i σ_ki² χ_ki, masses, temperatures): the Maxwellian
   // C_pq (p, q < modes) and ξ_ki (v1 A2 at constant ε, its quadrature otherwise); with partner_sonine also the
   // coefficients of the partner's a₂, a₃ in C_pq (closed forms at constant ε; the quadrature leaves them zero).

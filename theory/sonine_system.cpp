@@ -26,7 +26,7 @@ void SonineSystem::assemble(const double* lambda) {
   // every right-hand side).
   for (std::size_t i = 0; i < N_; ++i) sqrt_lambda_[i] = std::sqrt(lambda[i]), inv_sqrt_lambda_[i] = 1.0 / sqrt_lambda_[i];
   const SonineLambdas lambdas{lambda, sqrt_lambda_.data(), inv_sqrt_lambda_.data()};
-#pragma omp parallel for schedule(static) if (N_ >= 100 && terms_->concurrent_cross())
+#pragma omp parallel for schedule(static) if (N_ >= 100 && terms_->concurrent())
   for (std::size_t i = 0; i < N_; ++i) {
     thread_local std::vector<double> buffer;  // the row's six fields
     buffer.resize(6 * N_);
