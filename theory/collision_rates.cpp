@@ -7,6 +7,8 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "vector_clones.hpp"
+
 namespace granmix::theory {
 
 namespace {
@@ -96,11 +98,6 @@ template <bool per_pair>
 // The pass is most of the theory's time with many species: compiled also for AVX2 and AVX-512,
 // chosen at run time. FMA contraction is off for this file (CMakeLists.txt), so every version gives
 // the same numbers (IEEE +, ×, ÷ and √ round exactly once, in the same order).
-#if defined(__x86_64__)
-#define GRANMIX_VECTOR_CLONES __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default")))
-#else
-#define GRANMIX_VECTOR_CLONES
-#endif
 GRANMIX_VECTOR_CLONES void pass_uniform(const PassInput& in) {
   pair_pass<false>(in.N, in.T, in.x, in.n, in.sigma, in.chi, in.W2, in.D, in.S_D, in.S_W, in.U_W);
 }

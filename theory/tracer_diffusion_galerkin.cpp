@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -10,6 +11,7 @@
 
 #include "model/errors.hpp"
 #include "partner_axial_shape.hpp"
+#include "point_kernels.hpp"
 #include "sonine_polynomials.hpp"
 #include "sonine_quadrature.hpp"
 
@@ -45,20 +47,6 @@ const Rules& finest_rules() { return rules(tiers[0].hermite, tiers[0].laguerre);
 
 constexpr std::size_t max_basis = 16;
 
-// Rows L[m·count + p] = L_m^(3/2)(x_p), m < modes: the recurrence of sonine_vector_basis run over all points at once
-// (independent points in the inner loop, so it pipelines and vectorises).
-void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L) {
-  for (std::size_t p = 0; p < count; ++p) L[p] = 1.0;
-  if (modes > 1)
-    for (std::size_t p = 0; p < count; ++p) L[count + p] = 2.5 - x[p];
-  for (std::size_t n = 1; n + 1 < modes; ++n) {
-    const double a = 2.0 * double(n) + 2.5, b = double(n) + 1.5, inv = 1.0 / double(n + 1);
-    const double *Ln = L + n * count, *Lm = L + (n - 1) * count;
-    double* Lp = L + (n + 1) * count;
-    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p]) * Ln[p] - b * Lm[p]) * inv;
-  }
-}
-
 // Row m of x dL_m/dx = m L_m − (m + 3/2) L_{m−1} (associated Laguerre, α = 3/2), plus h_p L_m(x_p) (h null: 0).
 void x_derivative_row(const double* L, std::size_t count, std::size_t m, const double* h, double* out) {
   const double* Lm = L + m * count;
@@ -89,21 +77,17 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
     if (x0 >= t.x0) tier = &t;
   return {size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
             for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
-            double* L = B + count;  // rows 1…: L_{m−1}, then scaled by r = (x + x₀)^(−1/2)
+            double* L = B + count;  // rows 1…: L_{m−1}, then weighted by r = (x + x₀)^(−1/2)
             laguerre_rows(x, count, size - 1, L);
-            thread_local std::vector<double> r, h;  // reused: fresh ones cost page faults at every call
-            r.resize(count);
-            for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0);
             if (xdB) {
+              thread_local std::vector<double> h;  // reused: a fresh one costs page faults at every call
               h.resize(count);
               for (std::size_t p = 0; p < count; ++p) h[p] = -0.5 * x[p] / (x[p] + x0);  // h = x d ln r/dx
               for (std::size_t p = 0; p < count; ++p) xdB[p] = 0.0;
               for (std::size_t m = 1; m < size; ++m) x_derivative_row(L, count, m - 1, h.data(), xdB + m * count);
-              for (std::size_t m = 1; m < size; ++m)
-                for (std::size_t p = 0; p < count; ++p) xdB[m * count + p] *= r[p];
+              weight_rows(x, count, x0, 1, size, xdB);
             }
-            for (std::size_t m = 1; m < size; ++m)
-              for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
+            weight_rows(x, count, x0, 1, size, B);
           },
           tier->hermite, tier->laguerre};
 }
@@ -129,11 +113,13 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
   using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
   thread_local Rows B, B1, loss;  // reused across calls (fresh ones cost page faults)
-  thread_local Eigen::MatrixXd partial;
+  thread_local std::vector<double> lanes, weights, total;
   thread_local Eigen::VectorXd x, x1, wx, wcc, y;
   for (Rows* m : {&B, &B1, &loss}) m->resize(n_rows, n_cols);
   for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc}) v->resize(n_cols);
   y.resize(Eigen::Index(g.hermite.x.size()));
+  lanes.assign(count * N * N * 4, 0.0);  // every shape's products, four partial sums per entry (point_kernels.hpp)
+  weights.assign(count, 1.0);             // each shape's factor at the current W (1: a Maxwellian partner)
   // The f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp), the partner's shape as
   // E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
   for (std::size_t n = 0; n < speed.x.size(); ++n) {
@@ -150,22 +136,27 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       }
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
-    loss.array() = B.array().rowwise() * wx.transpose().array() - B1.array().rowwise() * wcc.transpose().array();
+    loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
     if (!shaped) {  // every shape Maxwellian: one product
-      partial.noalias() = B * loss.transpose();
-      for (std::size_t j = 0; j < count; ++j) out[j] += partial;
+      row_products(B.data(), loss.data(), P, N, 0, P, weights.data(), count, lanes.data());
       continue;
     }
     // The shape factor depends on W alone (c_iz), so the sum over |v_⊥|² is done once per W — one product's work for
     // every shape together — and each shape weights those partial sums.
-    const auto L = static_cast<Eigen::Index>(g.laguerre.x.size());
+    const std::size_t L = g.laguerre.x.size();
     for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
-      const Eigen::Index first = Eigen::Index(h) * L;
-      partial.noalias() = B.middleCols(first, L).lazyProduct(loss.middleCols(first, L).transpose());
       const double S2 = sonine_axial_S2(y[Eigen::Index(h)]), S3 = sonine_axial_S3(y[Eigen::Index(h)]);
       for (std::size_t j = 0; j < count; ++j)
-        out[j] += (shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3) * partial;
+        weights[j] = shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3;
+      row_products(B.data(), loss.data(), P, N, h * L, L, weights.data(), count, lanes.data());
     }
+  }
+  total.resize(N * N);
+  for (std::size_t j = 0; j < count; ++j) {
+    std::fill(total.begin(), total.end(), 0.0);
+    add_lanes(&lanes[j * N * N * 4], N * N, total.data());
+    for (std::size_t q = 0; q < N; ++q)
+      for (std::size_t m = 0; m < N; ++m) out[j](Eigen::Index(q), Eigen::Index(m)) += total[q * N + m];
   }
 }
 

@@ -1,0 +1,143 @@
+#include "point_kernels.hpp"
+
+#include <cmath>
+#include <vector>
+
+#include "vector_clones.hpp"
+
+namespace granmix::theory {
+
+GRANMIX_VECTOR_CLONES void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L) {
+  for (std::size_t p = 0; p < count; ++p) L[p] = 1.0;
+  if (modes > 1)
+    for (std::size_t p = 0; p < count; ++p) L[count + p] = 2.5 - x[p];
+  for (std::size_t n = 1; n + 1 < modes; ++n) {
+    const double a = 2.0 * double(n) + 2.5, b = double(n) + 1.5, inv = 1.0 / double(n + 1);
+    const double *Ln = L + n * count, *Lm = L + (n - 1) * count;
+    double* Lp = L + (n + 1) * count;
+    for (std::size_t p = 0; p < count; ++p) Lp[p] = ((a - x[p]) * Ln[p] - b * Lm[p]) * inv;
+  }
+}
+
+GRANMIX_VECTOR_CLONES void weight_rows(const double* x, std::size_t count, double x0, std::size_t first, std::size_t rows, double* B) {
+  thread_local std::vector<double> r;  // reused: a fresh one costs page faults at every call
+  r.resize(count);
+  for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0);
+  for (std::size_t m = first; m < rows; ++m)
+    for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
+}
+
+GRANMIX_VECTOR_CLONES void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count,
+                                     double* loss) {
+  for (std::size_t m = 0; m < n; ++m)
+    for (std::size_t p = 0; p < count; ++p) loss[m * count + p] = B[m * count + p] * wx[p] - B1[m * count + p] * wcc[p];
+}
+
+namespace {
+
+// The compiler's vector extension, two or four doubles, and its unaligned, aliasing form for loads.
+using Pair = double __attribute__((vector_size(16)));
+using PairMem = double __attribute__((vector_size(16), aligned(8), may_alias));
+using Quad = double __attribute__((vector_size(32)));
+using QuadMem = double __attribute__((vector_size(32), aligned(8), may_alias));
+
+// The R × C block of entries from row q of a and row m of b. Each entry keeps four partial sums, point l in lane
+// (l − first) mod 4 — one Quad, or two Pairs — and each shape's lanes gain c_j times them: the same operations in
+// the same order for either width.
+template <class Vec, class Mem, int R, int C>
+[[gnu::always_inline]] inline void dot_block(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
+                                             std::size_t len, const double* c, std::size_t shapes, std::size_t q, std::size_t m, double* lanes) {
+  constexpr int W = int(sizeof(Vec) / sizeof(double)), K = 4 / W;  // vectors per four points
+  Vec sum[R][C][K];
+  for (int i = 0; i < R; ++i)
+    for (int j = 0; j < C; ++j)
+      for (int k = 0; k < K; ++k) sum[i][j][k] = Vec{};
+  const double* ra[R];
+  const double* rb[C];
+  for (int i = 0; i < R; ++i) ra[i] = a + (q + std::size_t(i)) * count;
+  for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count;
+  const std::size_t end = first + len, whole = first + len / 4 * 4;
+  for (std::size_t l = first; l < whole; l += 4) {
+    Vec x[R][K], y[C][K];
+    for (int k = 0; k < K; ++k) {
+      for (int i = 0; i < R; ++i) x[i][k] = *reinterpret_cast<const Mem*>(ra[i] + l + std::size_t(k * W));
+      for (int j = 0; j < C; ++j) y[j][k] = *reinterpret_cast<const Mem*>(rb[j] + l + std::size_t(k * W));
+    }
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j)
+        for (int k = 0; k < K; ++k) sum[i][j][k] += x[i][k] * y[j][k];
+  }
+  for (std::size_t l = whole; l < end; ++l) {  // the last len mod 4 points, each into its lane
+    const int e = int(l - whole);
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j) sum[i][j][e / W][e % W] += ra[i][l] * rb[j][l];
+  }
+  for (std::size_t s = 0; s < shapes; ++s)
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j) {
+        double* at = lanes + ((s * n + q + std::size_t(i)) * n + m + std::size_t(j)) * 4;
+        for (int k = 0; k < K; ++k) {
+          Mem& to = *reinterpret_cast<Mem*>(at + k * W);
+          to = to + c[s] * sum[i][j][k];
+        }
+      }
+}
+
+template <class Vec, class Mem, int R>
+[[gnu::always_inline]] inline void dot_rows(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
+                                            std::size_t len, const double* c, std::size_t shapes, std::size_t q, double* lanes) {
+  constexpr int C = sizeof(Vec) == sizeof(Quad) ? 4 : 2;  // the block's accumulators within 16 registers
+  std::size_t m = 0;
+  for (; m + C <= n; m += C) dot_block<Vec, Mem, R, C>(a, b, count, n, first, len, c, shapes, q, m, lanes);
+  for (; m < n; ++m) dot_block<Vec, Mem, R, 1>(a, b, count, n, first, len, c, shapes, q, m, lanes);
+}
+
+template <class Vec, class Mem>
+[[gnu::always_inline]] inline void dot_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
+                                                std::size_t len, const double* c, std::size_t shapes, double* lanes) {
+  std::size_t q = 0;
+  for (; q + 2 <= n; q += 2) dot_rows<Vec, Mem, 2>(a, b, count, n, first, len, c, shapes, q, lanes);
+  if (q < n) dot_rows<Vec, Mem, 1>(a, b, count, n, first, len, c, shapes, q, lanes);
+}
+
+}  // namespace
+
+void row_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len,
+                           const double* c, std::size_t shapes, double* lanes) {
+  dot_products<Pair, PairMem>(a, b, count, n, first, len, c, shapes, lanes);
+}
+
+#if defined(__x86_64__)
+__attribute__((target("arch=x86-64-v3"))) void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n,
+                                                                   std::size_t first, std::size_t len, const double* c, std::size_t shapes,
+                                                                   double* lanes) {
+  dot_products<Quad, QuadMem>(a, b, count, n, first, len, c, shapes, lanes);
+}
+bool avx2_available() {
+  static const bool yes = __builtin_cpu_supports("avx2");
+  return yes;
+}
+#else
+void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
+                       std::size_t shapes, double* lanes) {
+  row_products_baseline(a, b, count, n, first, len, c, shapes, lanes);
+}
+bool avx2_available() { return false; }
+#endif
+
+void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
+                  std::size_t shapes, double* lanes) {
+  if (avx2_available())
+    row_products_avx2(a, b, count, n, first, len, c, shapes, lanes);
+  else
+    row_products_baseline(a, b, count, n, first, len, c, shapes, lanes);
+}
+
+void add_lanes(const double* lanes, std::size_t entries, double* out) {
+  for (std::size_t e = 0; e < entries; ++e) {
+    const double* s = lanes + 4 * e;
+    out[e] += (s[0] + s[2]) + (s[1] + s[3]);
+  }
+}
+
+}  // namespace granmix::theory

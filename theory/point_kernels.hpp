@@ -1,0 +1,36 @@
+#pragma once
+// The per-point loops of the Galerkin pair integrals (tracer_diffusion_galerkin.cpp, add_pair_collisions): each impact
+// speed evaluates the basis at ~10³ points twice, forms the loss columns and sums n × n products over them; v1 Fig. 8's
+// pair tables run ~10⁹ points through these. They are built for AVX2 and AVX-512 as well as the x86-64 baseline and
+// chosen at run time, and every version gives the same numbers: the elementwise loops round each IEEE +, ×, ÷, √ once
+// as written (no FMA contraction in this file, CMakeLists.txt), and each product entry sums its points in one fixed order
+// whatever the vector width (four partial sums, row_products). tests/theory/test_point_kernels.cpp
+// checks every kernel against a plain scalar loop bit for bit.
+#include <cstddef>
+
+namespace granmix::theory {
+
+// Rows L[m·count + p] = L_m^(3/2)(x_p), m < modes: the recurrence of sonine_vector_basis run over all points at once.
+void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L);
+// B[m·count + p] *= (x_p + x₀)^(−1/2) for first ≤ m < rows (collision_weighted_basis's weight).
+void weight_rows(const double* x, std::size_t count, double x0, std::size_t first, std::size_t rows, double* B);
+// The loss rows: loss[m·count + p] = B[m·count + p]·wx_p − B1[m·count + p]·wcc_p, m < n.
+void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count, double* loss);
+// The product a·bᵀ over the points first … first + len − 1, weighted for each of `shapes` shapes s by c[s], into
+// four partial sums per entry: lanes[((s·n + q)·n + m)·4 + e] += c[s]·Σ a[q·count + l]·b[m·count + l] over the points
+// l with (l − first) mod 4 = e, for q, m < n. add_lanes sums them, (s₀ + s₂) + (s₁ + s₃). The lanes are kept over
+// many calls (a pair's every impact speed and W) and summed once: every build does the same operations in the same order.
+void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
+                  std::size_t shapes, double* lanes);
+// out[e] += (s₀ + s₂) + (s₁ + s₃) of lanes[4e …], e < entries.
+void add_lanes(const double* lanes, std::size_t entries, double* out);
+
+// The two builds of row_products, for tests: the baseline's (SSE2, two doubles per vector) and the AVX2 one (four),
+// which row_products takes where the processor has AVX2 (avx2_available).
+void row_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len,
+                           const double* c, std::size_t shapes, double* lanes);
+void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
+                       std::size_t shapes, double* lanes);
+bool avx2_available();
+
+}  // namespace granmix::theory
