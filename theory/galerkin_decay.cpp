@@ -8,12 +8,19 @@
 #include "catmull_rom.hpp"
 #include "model/errors.hpp"
 #include "parallel_each.hpp"
+#include "vector_clones.hpp"
 
 namespace granmix::theory {
 
 namespace {
 
 constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_diffusion_galerkin.hpp: why 2)
+
+// o[e] += c0·s0[e] + c2·s2[e] + c3·s3[e]: one table node's three sources (elementwise: the same numbers in every build).
+GRANMIX_VECTOR_CLONES void add_node(double* o, std::size_t entries, double c0, const double* s0, double c2, const double* s2, double c3,
+                                    const double* s3) {
+  for (std::size_t e = 0; e < entries; ++e) o[e] += c0 * s0[e] + c2 * s2[e] + c3 * s3[e];
+}
 
 }  // namespace
 
@@ -165,7 +172,7 @@ void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double*
       const Sources& p = *terms_[j].sources;
       const double c0 = w[0] * terms_[j].weight, c2 = w[1] * terms_[j].weight, c3 = w[2] * terms_[j].weight;
       const double *s0 = p[0].data(), *s2 = p[1].data(), *s3 = p[2].data();
-      for (std::size_t e = 0; e < entries; ++e) o[e] += c0 * s0[e] + c2 * s2[e] + c3 * s3[e];
+      add_node(o, entries, c0, s0, c2, s2, c3, s3);
     }
   }
 }

@@ -42,11 +42,11 @@ using Quad = double __attribute__((vector_size(32)));
 using QuadMem = double __attribute__((vector_size(32), aligned(8), may_alias));
 
 // The R × C block of entries from row q of a and row m of b. Each entry keeps four partial sums, point l in lane
-// (l − first) mod 4 — one Quad, or two Pairs — and each shape's lanes gain c_j times them: the same operations in
-// the same order for either width.
-template <class Vec, class Mem, int R, int C>
+// (l − first) mod 4 — one Quad, or two Pairs: the same operations in the same order for either width.
+template <class Vec, class Mem, int Sh, int R, int C>
 [[gnu::always_inline]] inline void dot_block(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
-                                             std::size_t len, const double* c, std::size_t shapes, std::size_t q, std::size_t m, double* lanes) {
+                                             std::size_t len, const double* c, std::size_t shapes, std::size_t q, std::size_t m, double* out) {
+  if constexpr (Sh > 0) shapes = Sh;
   constexpr int W = int(sizeof(Vec) / sizeof(double)), K = 4 / W;  // vectors per four points
   Vec sum[R][C][K];
   for (int i = 0; i < R; ++i)
@@ -72,46 +72,70 @@ template <class Vec, class Mem, int R, int C>
     for (int i = 0; i < R; ++i)
       for (int j = 0; j < C; ++j) sum[i][j][e / W][e % W] += ra[i][l] * rb[j][l];
   }
-  for (std::size_t s = 0; s < shapes; ++s)
-    for (int i = 0; i < R; ++i)
-      for (int j = 0; j < C; ++j) {
-        double* at = lanes + ((s * n + q + std::size_t(i)) * n + m + std::size_t(j)) * 4;
-        for (int k = 0; k < K; ++k) {
-          Mem& to = *reinterpret_cast<Mem*>(at + k * W);
-          to = to + c[s] * sum[i][j][k];
+  // Each entry's lanes summed as (s₀ + s₂) + (s₁ + s₃) — the pair h = (s₀ + s₂, s₁ + s₃), then its two lanes, two
+  // entries at once — and c[s] times the sum added to shape s's entry.
+  for (int i = 0; i < R; ++i) {
+    Pair h[C];
+    for (int j = 0; j < C; ++j) {
+      if constexpr (K == 1)
+        h[j] = __builtin_shufflevector(sum[i][j][0], sum[i][j][0], 0, 1) + __builtin_shufflevector(sum[i][j][0], sum[i][j][0], 2, 3);
+      else
+        h[j] = sum[i][j][0] + sum[i][j][1];
+    }
+    double* row = out + (q + std::size_t(i)) * n + m;
+    if constexpr (C == 1) {
+      const double t = h[0][0] + h[0][1];
+      for (std::size_t s = 0; s < shapes; ++s) row[s * n * n] += c[s] * t;
+    } else {
+      for (int j = 0; j < C; j += 2) {
+        const Pair t = __builtin_shufflevector(h[j], h[j + 1], 0, 2) + __builtin_shufflevector(h[j], h[j + 1], 1, 3);
+        for (std::size_t s = 0; s < shapes; ++s) {
+          PairMem& to = *reinterpret_cast<PairMem*>(row + s * n * n + j);
+          to = to + c[s] * t;
         }
       }
+    }
+  }
 }
 
-template <class Vec, class Mem, int R>
+template <class Vec, class Mem, int Sh, int R>
 [[gnu::always_inline]] inline void dot_rows(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
-                                            std::size_t len, const double* c, std::size_t shapes, std::size_t q, double* lanes) {
+                                            std::size_t len, const double* c, std::size_t shapes, std::size_t q, double* out) {
   constexpr int C = sizeof(Vec) == sizeof(Quad) ? 4 : 2;  // the block's accumulators within 16 registers
   std::size_t m = 0;
-  for (; m + C <= n; m += C) dot_block<Vec, Mem, R, C>(a, b, count, n, first, len, c, shapes, q, m, lanes);
-  for (; m < n; ++m) dot_block<Vec, Mem, R, 1>(a, b, count, n, first, len, c, shapes, q, m, lanes);
+  for (; m + C <= n; m += C) dot_block<Vec, Mem, Sh, R, C>(a, b, count, n, first, len, c, shapes, q, m, out);
+  for (; m < n; ++m) dot_block<Vec, Mem, Sh, R, 1>(a, b, count, n, first, len, c, shapes, q, m, out);
 }
 
+template <class Vec, class Mem, int Sh>
+[[gnu::always_inline]] inline void dot_products_of(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
+                                                   std::size_t len, const double* c, std::size_t shapes, double* out) {
+  std::size_t q = 0;
+  for (; q + 2 <= n; q += 2) dot_rows<Vec, Mem, Sh, 2>(a, b, count, n, first, len, c, shapes, q, out);
+  if (q < n) dot_rows<Vec, Mem, Sh, 1>(a, b, count, n, first, len, c, shapes, q, out);
+}
+
+// One or three shapes (the tracer problem's, the history tables') with the shape loop unrolled; any other count looped.
 template <class Vec, class Mem>
 [[gnu::always_inline]] inline void dot_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first,
-                                                std::size_t len, const double* c, std::size_t shapes, double* lanes) {
-  std::size_t q = 0;
-  for (; q + 2 <= n; q += 2) dot_rows<Vec, Mem, 2>(a, b, count, n, first, len, c, shapes, q, lanes);
-  if (q < n) dot_rows<Vec, Mem, 1>(a, b, count, n, first, len, c, shapes, q, lanes);
+                                                std::size_t len, const double* c, std::size_t shapes, double* out) {
+  if (shapes == 1) return dot_products_of<Vec, Mem, 1>(a, b, count, n, first, len, c, shapes, out);
+  if (shapes == 3) return dot_products_of<Vec, Mem, 3>(a, b, count, n, first, len, c, shapes, out);
+  dot_products_of<Vec, Mem, 0>(a, b, count, n, first, len, c, shapes, out);
 }
 
 }  // namespace
 
 void row_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len,
-                           const double* c, std::size_t shapes, double* lanes) {
-  dot_products<Pair, PairMem>(a, b, count, n, first, len, c, shapes, lanes);
+                           const double* c, std::size_t shapes, double* out) {
+  dot_products<Pair, PairMem>(a, b, count, n, first, len, c, shapes, out);
 }
 
 #if defined(__x86_64__)
 __attribute__((target("arch=x86-64-v3"))) void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n,
                                                                    std::size_t first, std::size_t len, const double* c, std::size_t shapes,
-                                                                   double* lanes) {
-  dot_products<Quad, QuadMem>(a, b, count, n, first, len, c, shapes, lanes);
+                                                                   double* out) {
+  dot_products<Quad, QuadMem>(a, b, count, n, first, len, c, shapes, out);
 }
 bool avx2_available() {
   static const bool yes = __builtin_cpu_supports("avx2");
@@ -119,25 +143,18 @@ bool avx2_available() {
 }
 #else
 void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
-                       std::size_t shapes, double* lanes) {
-  row_products_baseline(a, b, count, n, first, len, c, shapes, lanes);
+                       std::size_t shapes, double* out) {
+  row_products_baseline(a, b, count, n, first, len, c, shapes, out);
 }
 bool avx2_available() { return false; }
 #endif
 
 void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
-                  std::size_t shapes, double* lanes) {
+                  std::size_t shapes, double* out) {
   if (avx2_available())
-    row_products_avx2(a, b, count, n, first, len, c, shapes, lanes);
+    row_products_avx2(a, b, count, n, first, len, c, shapes, out);
   else
-    row_products_baseline(a, b, count, n, first, len, c, shapes, lanes);
-}
-
-void add_lanes(const double* lanes, std::size_t entries, double* out) {
-  for (std::size_t e = 0; e < entries; ++e) {
-    const double* s = lanes + 4 * e;
-    out[e] += (s[0] + s[2]) + (s[1] + s[3]);
-  }
+    row_products_baseline(a, b, count, n, first, len, c, shapes, out);
 }
 
 }  // namespace granmix::theory

@@ -16,21 +16,19 @@ void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double
 void weight_rows(const double* x, std::size_t count, double x0, std::size_t first, std::size_t rows, double* B);
 // The loss rows: loss[m·count + p] = B[m·count + p]·wx_p − B1[m·count + p]·wcc_p, m < n.
 void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count, double* loss);
-// The product a·bᵀ over the points first … first + len − 1, weighted for each of `shapes` shapes s by c[s], into
-// four partial sums per entry: lanes[((s·n + q)·n + m)·4 + e] += c[s]·Σ a[q·count + l]·b[m·count + l] over the points
-// l with (l − first) mod 4 = e, for q, m < n. add_lanes sums them, (s₀ + s₂) + (s₁ + s₃). The lanes are kept over
-// many calls (a pair's every impact speed and W) and summed once: every build does the same operations in the same order.
+// The product a·bᵀ over the points first … first + len − 1, weighted for each of `shapes` shapes s by c[s]:
+// out[(s·n + q)·n + m] += c[s]·Σ_l a[q·count + l]·b[m·count + l] for q, m < n. Each entry sums its points into four
+// partial sums (point l into sum (l − first) mod 4, in order of l) and adds them as (s₀ + s₂) + (s₁ + s₃): the same
+// operations in the same order in every build.
 void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
-                  std::size_t shapes, double* lanes);
-// out[e] += (s₀ + s₂) + (s₁ + s₃) of lanes[4e …], e < entries.
-void add_lanes(const double* lanes, std::size_t entries, double* out);
+                  std::size_t shapes, double* out);
 
 // The two builds of row_products, for tests: the baseline's (SSE2, two doubles per vector) and the AVX2 one (four),
 // which row_products takes where the processor has AVX2 (avx2_available).
 void row_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len,
-                           const double* c, std::size_t shapes, double* lanes);
+                           const double* c, std::size_t shapes, double* out);
 void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
-                       std::size_t shapes, double* lanes);
+                       std::size_t shapes, double* out);
 bool avx2_available();
 
 }  // namespace granmix::theory

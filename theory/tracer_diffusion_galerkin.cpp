@@ -2,7 +2,6 @@
 
 #include <Eigen/Eigenvalues>
 
-#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -109,27 +108,24 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0 || shapes[j].full != nullptr;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
   // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
-  const std::size_t P = g.hermite.x.size() * g.laguerre.x.size();
-  const auto n_rows = static_cast<Eigen::Index>(N), n_cols = static_cast<Eigen::Index>(P);
-  using Rows = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;  // RadialBasis's layout
-  thread_local Rows B, B1, loss;  // reused across calls (fresh ones cost page faults)
-  thread_local std::vector<double> lanes, weights, total;
+  const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), P = H * L;
+  thread_local std::vector<double> B, B1, loss, sums, weights;  // reused across calls (fresh ones cost page faults)
   thread_local Eigen::VectorXd x, x1, wx, wcc, y;
-  for (Rows* m : {&B, &B1, &loss}) m->resize(n_rows, n_cols);
-  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc}) v->resize(n_cols);
-  y.resize(Eigen::Index(g.hermite.x.size()));
-  lanes.assign(count * N * N * 4, 0.0);  // every shape's products, four partial sums per entry (point_kernels.hpp)
-  weights.assign(count, 1.0);             // each shape's factor at the current W (1: a Maxwellian partner)
+  for (std::vector<double>* m : {&B, &B1, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
+  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc}) v->resize(Eigen::Index(P));
+  y.resize(Eigen::Index(H));
+  sums.assign(count * N * N, 0.0);  // every shape's products, row by row (point_kernels.hpp)
+  weights.assign(count, 1.0);       // each shape's factor at the current W (1: a Maxwellian partner)
   // The f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp), the partner's shape as
   // E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
   for (std::size_t n = 0; n < speed.x.size(); ++n) {
     const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
     const double wn = flux * speed.weight[n];
     Eigen::Index p = 0;
-    for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
+    for (std::size_t h = 0; h < H; ++h) {
       const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
       y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
-      for (std::size_t l = 0; l < g.laguerre.x.size(); ++l, ++p) {
+      for (std::size_t l = 0; l < L; ++l, ++p) {
         const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
         x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
         wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
@@ -138,26 +134,21 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
     if (!shaped) {  // every shape Maxwellian: one product
-      row_products(B.data(), loss.data(), P, N, 0, P, weights.data(), count, lanes.data());
+      row_products(B.data(), loss.data(), P, N, 0, P, weights.data(), count, sums.data());
       continue;
     }
     // The shape factor depends on W alone (c_iz), so the sum over |v_⊥|² is done once per W — one product's work for
     // every shape together — and each shape weights those partial sums.
-    const std::size_t L = g.laguerre.x.size();
-    for (std::size_t h = 0; h < g.hermite.x.size(); ++h) {
+    for (std::size_t h = 0; h < H; ++h) {
       const double S2 = sonine_axial_S2(y[Eigen::Index(h)]), S3 = sonine_axial_S3(y[Eigen::Index(h)]);
       for (std::size_t j = 0; j < count; ++j)
         weights[j] = shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3;
-      row_products(B.data(), loss.data(), P, N, h * L, L, weights.data(), count, lanes.data());
+      row_products(B.data(), loss.data(), P, N, h * L, L, weights.data(), count, sums.data());
     }
   }
-  total.resize(N * N);
-  for (std::size_t j = 0; j < count; ++j) {
-    std::fill(total.begin(), total.end(), 0.0);
-    add_lanes(&lanes[j * N * N * 4], N * N, total.data());
+  for (std::size_t j = 0; j < count; ++j)
     for (std::size_t q = 0; q < N; ++q)
-      for (std::size_t m = 0; m < N; ++m) out[j](Eigen::Index(q), Eigen::Index(m)) += total[q * N + m];
-  }
+      for (std::size_t m = 0; m < N; ++m) out[j](Eigen::Index(q), Eigen::Index(m)) += sums[(j * N + q) * N + m];
 }
 
 GalerkinAverages galerkin_averages(const RadialBasis& basis, double weight_temperature) {
