@@ -11,6 +11,7 @@
 #include "parallel_each.hpp"
 #include "sonine_polynomials.hpp"
 #include "sphere_gain.hpp"
+#include "vector_clones.hpp"
 
 namespace granmix::theory {
 
@@ -82,8 +83,8 @@ struct Spheres {
 // velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
 // velocity, so it is subtracted once per u.
 template <bool full>
-void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll,
-              Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
+[[gnu::always_inline]] inline void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
+                                            Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
   const GaussRule& uq = speed_rule();
   const std::size_t nb = std::size_t(coll.rows()), nodes = gas.size();
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
@@ -202,6 +203,17 @@ Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, cons
   return P;
 }
 
+// The two kinds of interval, each built for AVX2 and AVX-512 too (vector_clones.hpp: this file has no FMA contraction,
+// so every build gives the same numbers); the spheres' square roots and divisions four or eight at a time.
+GRANMIX_VECTOR_CLONES void density_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
+                                            Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
+  interval<false>(p, gas, h, i, coll, coll1, out);
+}
+GRANMIX_VECTOR_CLONES void full_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
+                                         Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
+  interval<true>(p, gas, h, i, coll, coll1, out);
+}
+
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule, SpeedGridParts parts) {
   const double h = U / double(K);
   const bool full = parts == SpeedGridParts::all;
@@ -215,9 +227,9 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
     const auto cols = Eigen::Index(4 * i);
     auto c1 = full ? coll1.middleCols(cols, 4) : coll1.middleCols(0, 0);
     if (full)
-      interval<true>(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      full_interval(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
     else
-      interval<false>(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      density_interval(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
   });
   SpeedGrid g;
   g.h = h;
