@@ -35,7 +35,7 @@ GRANMIX_VECTOR_CLONES void loss_rows(const double* B, const double* B1, const do
 
 namespace {
 
-// The compiler's vector extension, two or four doubles, and its unaligned, aliasing form for loads.
+// The compiler's vector extension, two or four doubles, and its unaligned, aliasing form for loads and stores.
 using Pair = double __attribute__((vector_size(16)));
 using PairMem = double __attribute__((vector_size(16), aligned(8), may_alias));
 using Quad = double __attribute__((vector_size(32)));

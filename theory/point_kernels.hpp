@@ -1,6 +1,6 @@
 #pragma once
 // The per-point loops of the Galerkin pair integrals (tracer_diffusion_galerkin.cpp, add_pair_collisions): each impact
-// speed evaluates the basis at ~10³ points twice, forms the loss columns and sums n × n products over them; v1 Fig. 8's
+// speed evaluates the basis at ~10³ points twice, forms the loss rows and sums n × n products over them; v1 Fig. 8's
 // pair tables run ~10⁹ points through these. They are built for AVX2 and AVX-512 as well as the x86-64 baseline and
 // chosen at run time, and every version gives the same numbers: the elementwise loops round each IEEE +, ×, ÷, √ once
 // as written (no FMA contraction in this file, CMakeLists.txt), and each product entry sums its points in one fixed order
