@@ -131,8 +131,9 @@ void row_products_baseline(const double* a, const double* b, std::size_t count, 
   dot_products<Pair, PairMem>(a, b, count, n, first, len, c, shapes, out);
 }
 
+// AVX2 alone (no FMA, no BMI: exactly what the processor check below asks for).
 #if defined(__x86_64__)
-__attribute__((target("arch=x86-64-v3"))) void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n,
+__attribute__((target("avx2"))) void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n,
                                                                    std::size_t first, std::size_t len, const double* c, std::size_t shapes,
                                                                    double* out) {
   dot_products<Quad, QuadMem>(a, b, count, n, first, len, c, shapes, out);
