@@ -2,7 +2,6 @@
 // contact values a dense scene's rates carry, and MG's time unit. Both enter theory and DSMC alike
 // or cancel in the judged ratios, so no theory–DSMC comparison can see an error in them.
 #include <catch2/catch.hpp>
-#include <omp.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +14,7 @@
 #include "theory/collision_rates.hpp"
 #include "theory/scene_theory.hpp"
 #include "theory/theory_level.hpp"
+#include "theory_fixtures.hpp"
 
 using namespace granmix;
 using namespace granmix::theory;
@@ -89,14 +89,8 @@ quick = { particles = 1000, replicas = 2 }
 paper = { particles = 1000, replicas = 2 }
 )",
                                                 "sweep-threads.toml");
-  auto run = [&](int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
-    const TheoryResult r = run_level(s, "kinetic-converged");
-    omp_set_num_threads(before);
-    return r.table;
-  };
-  const model::Table one = run(1), two = run(2);
+  auto run = [&] { return run_level(s, "kinetic-converged").table; };
+  const model::Table one = test::with_threads(1, run), two = test::with_threads(2, run);
   REQUIRE(one.columns == two.columns);
   REQUIRE(one.rows.size() == two.rows.size());
   std::size_t differ = 0;  // bit for bit, NaN (the empty cells) equal to NaN

@@ -12,8 +12,6 @@
 #include <random>
 #include <vector>
 
-#include <omp.h>
-
 #include "model/enskog.hpp"
 #include "model/mixture.hpp"
 #include "model/mixture_generators.hpp"
@@ -233,16 +231,13 @@ TEST_CASE("Sonine moments: 43 species' rates the same on one thread and on two (
   const CollisionRates r(mix, model::Restitution::constant(N, 0.5), model::dilute_contact_values(N));
   std::vector<double> T(N), z(2 * N);
   for (std::size_t k = 0; k < N; ++k) T[k] = 1.0 + 0.05 * double(k), z[k] = 0.1 - 0.003 * double(k), z[N + k] = -0.01 + 0.0005 * double(k);
-  auto run = [&](int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
+  auto run = [&] {
     const SonineMomentCooling model(r, 3);
     std::vector<double> out(3 * N);
     model.rates(T.data(), z.data(), out.data(), out.data() + N);
-    omp_set_num_threads(before);
     return out;
   };
-  const std::vector<double> one = run(1), two = run(2);
+  const std::vector<double> one = test::with_threads(1, run), two = test::with_threads(2, run);
   CHECK(one == two);
   for (double x : one) CHECK(std::isfinite(x));
 }

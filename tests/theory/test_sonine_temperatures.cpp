@@ -10,8 +10,6 @@
 #include <numbers>
 #include <random>
 
-#include <omp.h>
-
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
 #include "theory/settled_ratios.hpp"
@@ -242,16 +240,13 @@ TEST_CASE("Sonine cooling rates of 300 species: the same numbers on one thread a
   const std::size_t N = mix.size();
   std::vector<double> T(N), c(N);
   for (std::size_t k = 0; k < N; ++k) T[k] = 1.0 + 0.01 * double(k), c[k] = 0.05 - 1e-4 * double(k);
-  auto run = [&](int threads) {
-    const int before = omp_get_max_threads();
-    omp_set_num_threads(threads);
+  auto run = [&] {
     const SonineCooling model(r, CumulantMode::relaxing);
     std::vector<double> out(2 * N);
     model.rates(T.data(), c.data(), out.data(), out.data() + N);
-    omp_set_num_threads(before);
     return out;
   };
-  const std::vector<double> one = run(1), two = run(2);
+  const std::vector<double> one = test::with_threads(1, run), two = test::with_threads(2, run);
   CHECK(one == two);
   CHECK(std::isfinite(one[N - 1]));
   CHECK(one[0] > 0.0);

@@ -3,11 +3,23 @@
 #include <cmath>
 #include <numbers>
 
+#include <omp.h>
+
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
 #include "theory/collision_rates.hpp"
 
 namespace granmix::test {
+
+// f() on `threads` OpenMP threads, the previous count restored (the tests that the numbers do not depend on it).
+template <class F>
+auto with_threads(int threads, F&& f) {
+  const int before = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  auto out = f();
+  omp_set_num_threads(before);
+  return out;
+}
 
 inline theory::CollisionRates constant_rates(std::vector<model::Species> s, double eps) {
   model::Mixture mix(std::move(s));
