@@ -19,7 +19,7 @@
 //   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
 // The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
 // a_i3 G³(ρ)], ρ = θ_i/θ_k, the pair problem at θ_k = 1/2 (add_pair_collisions). Those are tabulated on a grid in
-// ln ρ (step pair_grid_step) as the history reaches them, 0.1–1.3 ms per node by the pair rule (those one right-hand side needs on OpenMP
+// ln ρ (step pair_grid_step) as the history reaches them, 0.07–0.5 ms per node by the pair rule (v1 Fig. 8, AVX-512 machine, 2026-12-06) (those one right-hand side needs on OpenMP
 // threads together), and interpolated by Catmull–Rom cubics
 // (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
 // reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.

@@ -25,8 +25,9 @@
 // sonine_quadrature.hpp (the impact speed u, then W and |v_⊥|² given u, σ̂ = ẑ): u by the half-range Gauss rule at
 // constant ε (16 nodes, RadialBasis::speed_points; the 80 of the impact-speed rule for ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
 // for the non-polynomial basis: 5e-4 of the elastic 1:100 light species' factor (1.11014 against 1.10958 with
-// 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, ~1 ms per pair (the basis
-// evaluated over all points of one impact speed at once, the sum one matrix product); the species on OpenMP threads.
+// 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, 0.07–0.5 ms per pair with three partner
+// shapes by the rule's tier (v1 Fig. 8's pairs, 2026-12-06; the basis evaluated over all points of one impact speed at
+// once, the sums by the per-point kernels of point_kernels.hpp); the species on OpenMP threads.
 #include <Eigen/Dense>
 
 #include <complex>
