@@ -22,32 +22,6 @@ namespace granmix::theory {
 
 namespace {
 
-// Nodes and weights of the u integral in w = (u/√(2V))^(1/10): u φ_V(u) du = √(2V/π) 10 w¹⁹ e^(−w²⁰) dw
-// (the factor √(2V/π) is applied per pair). Gauss–Legendre on [0, 0.9] and [0.9, 1.3] (e^(−w²⁰) < 1e-80
-// beyond 1.3 even with the u⁸ of the fourth moment); the panels split the steep fall of e^(−w²⁰) from the
-// w¹⁹ rise. 32 + 48 nodes reproduce the closed forms to ~1e-14 (tests/theory/test_sonine_quadrature.cpp); `total`
-// nodes in that proportion (2/5 and 3/5).
-GaussRule make_speed_rule(std::size_t total) {
-  GaussRule r;  // x = w¹⁰ = u/√(2V) at the nodes; weight includes 10 w¹⁹ e^(−w²⁰)
-  const double edges[] = {0.0, 0.9, 1.3};
-  const std::size_t nodes[] = {total * 2 / 5, total - total * 2 / 5};
-  for (std::size_t p = 0; p < 2; ++p) {
-    gsl_integration_glfixed_table* t = gsl_integration_glfixed_table_alloc(nodes[p]);
-    if (t == nullptr) throw NumericalError("gsl_integration_glfixed_table_alloc failed");
-    for (std::size_t j = 0; j < nodes[p]; ++j) {
-      double x = 0.0, h = 0.0;
-      if (gsl_integration_glfixed_point(edges[p], edges[p + 1], j, &x, &h, t) != 0) {
-        gsl_integration_glfixed_table_free(t);
-        throw NumericalError("gsl_integration_glfixed_point failed");
-      }
-      r.x.push_back(std::pow(x, 10));
-      r.weight.push_back(h * 10.0 * std::pow(x, 19) * std::exp(-std::pow(x, 20)));
-    }
-    gsl_integration_glfixed_table_free(t);
-  }
-  return r;
-}
-
 // The rules of M modes: Hermite max(5, 2M), Laguerre max(2, M) points (see the header), M = 1 … 5.
 struct ModeRules {
   std::array<GaussRule, max_sonine_modes + 1> hermite, laguerre;
@@ -82,7 +56,7 @@ GaussRule golub_welsch(std::size_t n, bool laguerre) {
 namespace {
 
 // A fixed set of rule sizes, each rule built on its first use (thread-safe: one std::call_once per size), so sizes
-// that only a test asks for cost nothing elsewhere. Shared by the impact-speed and the half-range rules.
+// that only a test asks for cost nothing elsewhere.
 class RulesBySize {
  public:
   RulesBySize(std::vector<std::size_t> sizes, GaussRule (*make)(std::size_t), std::string name)
@@ -106,15 +80,6 @@ class RulesBySize {
   std::vector<GaussRule> rules_;
   std::vector<std::once_flag> once_;
 };
-
-}  // namespace
-
-const GaussRule& impact_speed_rule(std::size_t nodes) {
-  static RulesBySize rules({40, 80, 160}, make_speed_rule, "impact-speed rule");  // 40 and 160: one test's
-  return rules(nodes);
-}
-
-namespace {
 
 // The Gauss rule of the weight x e^(−x²) on [0, ∞) (u = √(2V) x): its recurrence by the Stieltjes procedure on a
 // discretisation of the weight (Gauss–Legendre, 512 points on [0, 10], where the weight is below 1e-42 beyond), then
@@ -174,10 +139,10 @@ const GaussRule& half_range_rule(std::size_t n) {
   return rules(n);
 }
 
-std::size_t sonine_quadrature_nodes() { return impact_speed_rule().x.size(); }
+std::size_t sonine_quadrature_nodes() { return impact_speed_points; }
 
-void sonine_quadrature_speeds(double V, double* u) {
-  const GaussRule& rule = impact_speed_rule();
+void sonine_quadrature_speeds(double V, double* u, std::size_t nodes) {
+  const GaussRule& rule = half_range_rule(nodes);
   const double u_scale = std::sqrt(2.0 * V);
   for (std::size_t n = 0; n < rule.x.size(); ++n) u[n] = u_scale * rule.x[n];
 }
@@ -192,7 +157,7 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes) {
   if (modes < 1 || modes > max_sonine_modes) throw std::invalid_argument("sonine_pair_quadrature: modes must be 1 to 5");
-  const GaussRule& rule = impact_speed_rule();
+  const GaussRule& rule = half_range_rule(impact_speed_points);
   const GaussRule &hermite = mode_rules().hermite[modes], &laguerre = mode_rules().laguerre[modes];
   const double V = theta_k + theta_i, alpha = theta_k / V, sW = std::sqrt(theta_k * theta_i / V);
   const double u_scale = std::sqrt(2.0 * V), flux = 4.0 * std::numbers::pi * std::sqrt(2.0 * V / std::numbers::pi);
@@ -229,8 +194,8 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
   return out;
 }
 
-SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order) {
-  const GaussRule& rule = impact_speed_rule();
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order, std::size_t nodes) {
+  const GaussRule& rule = half_range_rule(nodes);
   // Order 3: Hermite 8 × Laguerre 4 (degree 12 in W, 6 in r); order 4: 10 × 5 (S₄ times the change of v⁸: 16 and 8).
   const std::size_t rules = order > 3 ? 5 : 4;
   const GaussRule &hermite = mode_rules().hermite[rules], &laguerre = mode_rules().laguerre[rules];

@@ -32,14 +32,17 @@ struct GaussRule {
 // Expectation over N(0, 1) (laguerre = false) or Exp(1) (true), n points, exact to degree 2n − 1, by Golub–Welsch
 // (the eigen-decomposition of the recurrence's Jacobi matrix).
 GaussRule golub_welsch(std::size_t n, bool laguerre);
-// ∫₀^∞ u φ_V(u) g(u) du ≈ √(2V/π) Σ_n weight_n g(√(2V) x_n), φ_V the N(0, V) density (the rule below).
-// nodes: 80 (the closed forms to ~1e-14; the tracer problem's pair sources to 1.8e-7 of 160 nodes', where 40 err by
-// 2.7e-2: tests/theory/test_tracer_diffusion_galerkin.cpp), 40 or 160 (that test's).
-const GaussRule& impact_speed_rule(std::size_t nodes = 80);
-// The same integral for an integrand smooth in u (constant ε): the Gauss rule of the weight x e^(−x²) on [0, ∞),
-// n nodes, exact to degree 2n − 1 in x (the impact-speed rule above is built for ε(u) ∝ u^(1/5) instead); n one of
-// half_range_rule_sizes, each built once.
-inline constexpr std::size_t half_range_rule_sizes[] = {12, 16, 24, 32};
+// ∫₀^∞ u φ_V(u) g(u) du ≈ √(2V/π) Σ_n weight_n g(√(2V) x_n), φ_V the N(0, V) density: the Gauss rule of the weight
+// x e^(−x²) on [0, ∞) (u = √(2V) x), n nodes, exact to degree 2n − 1 in x; n one of half_range_rule_sizes, each built
+// once. At constant ε the integrands are smooth in u (polynomials, for the Sonine quadratures). A viscoelastic ε(u) is
+// a function of u^(1/10) (v1 Eq. 5), not smooth at u = 0; there the momentum transfer ∝ (1 + ε)u and the weight ∝ u
+// make the rule's error fall algebraically, ~n^(−6): the moment rates of 200 random viscoelastic pairs (θ_k over
+// e^(±6), θ_i/θ_k over e^(±4), μ 0.01–0.99, A κ^(2/5) e^(−4)–1) against the 160-node Gauss–Legendre rule in
+// w = (u/√(2V))^(1/10) that served ε(u) until 2026-12-06: 16 nodes 4.2e-9, 24 4.2e-10, 32 8.1e-11, 48 7.3e-12 of the
+// pair's largest rate (that rule's 80 nodes: 5.8e-12 on the moments, but 2.4e-7 on the tracer problem's pair sources,
+// against 3e-8 for 24 nodes of this one: tests/theory/test_tracer_diffusion_galerkin.cpp). 48: the tests' reference
+// (beyond it the discretised weight's Stieltjes recurrence loses digits).
+inline constexpr std::size_t half_range_rule_sizes[] = {12, 16, 24, 32, 48};
 const GaussRule& half_range_rule(std::size_t n);
 
 // All per unit n_i σ_ki² χ_ki (multiply by it for the pair's rates).
@@ -57,9 +60,11 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 
 // The normal impact speeds u_n at which the quadrature needs ε for a pair with V = θ_k + θ_i, and the same
 // integrals with ε given there (eps_nodes[n] = ε(u_n)): callers that reuse ε between calls of equal V
-// (pairs k–i and i–k, the cooling and the velocity-decay closures) evaluate the law once.
+// (pairs k–i and i–k, the cooling and the velocity-decay closures) evaluate the law once. The nodes: the half-range
+// rule's 32 (8e-11 of a viscoelastic pair's largest moment rate, see above; at constant ε exact).
+inline constexpr std::size_t impact_speed_points = 32;
 std::size_t sonine_quadrature_nodes();
-void sonine_quadrature_speeds(double V, double* u);
+void sonine_quadrature_speeds(double V, double* u, std::size_t nodes = impact_speed_points);
 PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, std::size_t modes = 2);
 
 // The rates of the moment closure at order 3 or 4 (sonine_moment_cooling.hpp) by the same quadrature: rates of ⟨c^(2p)⟩_k,
@@ -69,7 +74,9 @@ PairSonineIntegrals sonine_pair_quadrature(double theta_k, double theta_i, doubl
 // these are the closed forms of sonine_moment_pair (tested). E[· | u] exact: Hermite 8 points in W (degree 12:
 // S₃ times the change of v⁶), Laguerre 4 in |v_k⊥|² (degree 6), E[S_q(c_i²) | v_iz] = L_q^(−1/2)(y) in closed form;
 // order 4: Hermite 10, Laguerre 5 (S₄ times the change of v⁸: degree 16 and 8).
-SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order = 3);
+// nodes: the rule's (sonine_quadrature_speeds' for the same eps_nodes; another than impact_speed_points: tests).
+SonineMomentRates sonine_moment_quadrature(double theta_k, double theta_i, double mu, const double* eps_nodes, int order = 3,
+                                           std::size_t nodes = impact_speed_points);
 
 // The same integrals as MG's reduced pair terms of species k (sonine_terms.hpp) in units with v0 = 1
 // (θ_k = 1/(2λ_k)): ζ = −rate⟨v_k²⟩/(3θ_k), Λ = rate⟨v_k⁴⟩ (the ⟨V⁴⟩ balance of sonine_system.hpp), the

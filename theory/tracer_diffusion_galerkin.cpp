@@ -98,7 +98,7 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   if (weight == 0.0) return;
   const std::size_t N = basis.size;
   const Rules& g = rules(basis.hermite_points, basis.laguerre_points);
-  const GaussRule& speed = rates.law().is_viscoelastic() ? impact_speed_rule(basis.impact_points) : half_range_rule(basis.speed_points);
+  const GaussRule& speed = half_range_rule(rates.law().is_viscoelastic() ? basis.impact_points : basis.speed_points);
   const double lam = weight_temperature, theta_w = lam * theta_k, inv2k = 0.5 / theta_k, inv2i = 0.5 / theta_i;
   const double mu = mix[i].mass / (mix[i].mass + mix[k].mass);
   const double V = theta_w + theta_i, alpha = theta_w / V, sW = std::sqrt(theta_w * theta_i / V);

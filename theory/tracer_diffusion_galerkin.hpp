@@ -23,7 +23,7 @@
 // B_1, and x₀ = v₀²/(2θ_k), v₀ = Σ_i w_i √(8θ_i/π) / Σ_i w_i (the partners' mean speed, weighted as their
 // collision rates) keeps ν(c) finite at c = 0 as moving partners do. The pair integrals are those of
 // sonine_quadrature.hpp (the impact speed u, then W and |v_⊥|² given u, σ̂ = ẑ): u by the half-range Gauss rule at
-// constant ε (16 nodes, RadialBasis::speed_points; the 80 of the impact-speed rule for ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
+// constant ε (16 nodes, RadialBasis::speed_points; 24 for a viscoelastic ε(u), law eps_at), W and |v_⊥|² by 60 × 36 Gauss points
 // for the non-polynomial basis: 5e-4 of the elastic 1:100 light species' factor (1.11014 against 1.10958 with
 // 120 × 80), 2.2e-3 in the Lorentz limit, ≤ 1e-4 at ε ≤ 0.8. Cost: ~5·10⁴ points per pair, 0.07–0.5 ms per pair with three partner
 // shapes by the rule's tier (v1 Fig. 8's pairs, 2026-12-06; the basis evaluated over all points of one impact speed at
@@ -59,9 +59,11 @@ struct RadialBasis {
   // budget: 5e-5); v1 Fig. 8's 43 species at their settled ratios: ≤ 1.7e-11 of each species' operator (24 nodes:
   // 3e-13; 12 nodes: 1.6e-5). tests/theory/test_tracer_diffusion_galerkin.cpp. (24 nodes before 2026-12-06.)
   std::size_t speed_points = 16;
-  // The impact speed's rule for a viscoelastic ε(u) (impact_speed_rule): 80 nodes, converged (160 move a pair source by
-  // ≤ 1.8e-7 of its largest entry; 40 by 2.7e-2).
-  std::size_t impact_points = 80;
+  // The same rule for a viscoelastic ε(u), a function of u^(1/10) (sonine_quadrature.hpp: the rule's error then falls
+  // as ~n^(−6), not geometrically): 24 nodes, ≤ 3e-8 of a pair source's largest entry against 48 (16 nodes 4.7e-6,
+  // 12 nodes 8.6e-4; tests/theory/test_tracer_diffusion_galerkin.cpp). Until 2026-12-06 80 nodes of a Gauss–Legendre
+  // rule in (u/√(2V))^(1/10), which erred by 2.4e-7.
+  std::size_t impact_points = 24;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where
