@@ -11,6 +11,7 @@
 #include <tuple>
 #include <vector>
 
+#include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
 #include "theory/converged_hcs.hpp"
 #include "theory/converged_hcs_diffusion.hpp"
@@ -225,6 +226,22 @@ TEST_CASE("converged HCS: the model error parts of the MG scenes' tolerances", "
       c_error = std::max(c_error, c.grid_change.a2 + c.partner_truncation.a2);
     }
     std::printf("%s: largest model error of gamma %.2e, of c %.2e\n", s.name, gamma_error, c_error);
+  }
+  // MG Fig. 6 (μ = 2, δ = 1/2, w = 2; Enskog χ of MG Eq. 26): γ(n*)/γ(0), whose model error is the sum of both γ's
+  // (their parts need not cancel), at the DSMC points n* = 0.1, 0.25, 0.5.
+  for (double alpha : {0.6, 0.8}) {
+    const auto error_at = [alpha](double n_star) {
+      const model::Mixture mix = model::montanero_garzo_binary(2.0, 0.5, 2.0, n_star);
+      const auto chi = n_star > 0.0 ? model::enskog_contact_values(mix) : model::dilute_contact_values(2);
+      const ConvergedHcs c = converged_hcs(CollisionRates(mix, model::Restitution::constant(2, alpha), chi), true);
+      std::printf("mg-fig06-alpha%g n* %g: gamma %.5f (grid %.1e, partners %.1e)\n", alpha, n_star, c.hcs.gamma(), c.grid_change.T,
+                  c.partner_truncation.T);
+      return c.grid_change.T + c.partner_truncation.T;
+    };
+    const double dilute = error_at(0.0);
+    double ratio_error = 0.0;
+    for (double n_star : {0.1, 0.25, 0.5}) ratio_error = std::max(ratio_error, dilute + error_at(n_star));
+    std::printf("mg-fig06-alpha%g: largest model error of gamma(n*)/gamma(0) %.2e\n", alpha, ratio_error);
   }
 }
 
