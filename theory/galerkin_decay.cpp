@@ -65,7 +65,9 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
       sum += share[i] = mix[i].density * s * s * rates.chi(k, i) * std::sqrt(T_ref[k] / mix[k].mass + T_ref[i] / mix[i].mass) *
                         mix[i].mass / (mix[i].mass + mix[k].mass);
     }
-    for (std::size_t i = 0; i < N; ++i) coarse_[k * N + i] = share[i] < coarse_share * sum;
+    const bool smooth = species_[k].basis.hermite_points < RadialBasis{}.hermite_points;  // x₀ past the finest rule's tier
+    const double limit = coarse_share * (smooth ? smooth_basis_share_factor : 1.0);
+    for (std::size_t i = 0; i < N; ++i) coarse_[k * N + i] = share[i] < limit * sum;
   }
   // Diffusive at the reference state (Maxwellian partners, ζ = ξ_k): every eigenvalue of Ã decays (Ã is similar to
   // the settled problem's K of galerkin_memory).
