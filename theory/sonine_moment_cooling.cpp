@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -21,37 +22,56 @@ namespace {
 
 constexpr int PM = sonine_moment_max, NS = sonine_moment_sources;
 
-// The table, entry (p − 1)·NS + source.
-const TermTable& moment_table() {
-  static const TermTable t = [] {
+// Whether order `order` carries entry (p, source): p ≤ order and no a_q beyond it (sources 1…PM−1 own a₂…a_PM, then
+// the partner's).
+constexpr bool carried(int order, int p, int source) {
+  const int q = source == 0 ? 0 : source <= PM - 1 ? source + 1 : source - (PM - 1) + 1;  // the Sonine coefficient's index
+  return p <= order && q <= order;
+}
+
+// The table, entry (p − 1)·NS + source: all of it (order 4), or the rows order 3 carries (order 2 reads a part of
+// those) — 75 of its 176 (entry, power of a) groups, so a right-hand side of v1 Fig. 8's order-3 closure evaluates
+// less than half of them.
+constexpr int table_order(int order) { return order > 3 ? PM : 3; }
+const TermTable& moment_table(int order) {
+  const auto make = [](int order) {
     std::vector<TermTable::Term> rows;
-    for (const SonineMomentTerm& r : sonine_moment_terms) rows.push_back({unsigned((r.p - 1) * NS + r.source), r.ia, r.ib, r.coefficient});
+    for (const SonineMomentTerm& r : sonine_moment_terms)
+      if (carried(order, r.p, r.source)) rows.push_back({unsigned((r.p - 1) * NS + r.source), r.ia, r.ib, r.coefficient});
     return TermTable(rows);
-  }();
-  return t;
+  };
+  static const TermTable all = make(PM), third = make(3);
+  return table_order(order) == PM ? all : third;
 }
 
 // H(p; source) of one ordered pair from its β polynomials, times β P: the rates of ⟨c^(2p)⟩_k per unit
-// Sonine coefficient.
-std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, double a, double bP) {
+// Sonine coefficient; the entries its table does not carry NaN.
+std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, double a, double bP, int order) {
   std::array<double, PM * NS> H{};
-  moment_table().evaluate(polys, a, H.data());
-  for (double& x : H) x *= bP;
+  moment_table(order).evaluate(polys, a, H.data());
+  static constexpr auto mask = [](int order) {  // the entries a table carries
+    std::array<bool, PM * NS> m{};
+    for (int e = 0; e < PM * NS; ++e) m[std::size_t(e)] = carried(order, e / NS + 1, e % NS);
+    return m;
+  };
+  static constexpr std::array<bool, PM * NS> all = mask(PM), third = mask(3);
+  const std::array<bool, PM * NS>& kept = table_order(order) == PM ? all : third;
+  for (std::size_t e = 0; e < H.size(); ++e) H[e] = kept[e] ? H[e] * bP : std::numeric_limits<double>::quiet_NaN();
   return H;
 }
 
 }  // namespace
 
-std::vector<double> sonine_moment_beta_polynomials(double beta) { return moment_table().beta_polynomials(beta); }
+std::vector<double> sonine_moment_beta_polynomials(double beta, int order) { return moment_table(order).beta_polynomials(beta); }
 
-std::array<double, PM * NS> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai) {
+std::array<double, PM * NS> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai, int order) {
   const double V = Ak + Ai;
-  return pair_moments(polys, Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V));
+  return pair_moments(polys, Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V), order);
 }
 
-std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai) {
+std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai, int order) {
   const double beta = mu * (1.0 + eps);
-  return sonine_moment_pair_from(sonine_moment_beta_polynomials(beta), weight, beta, Ak, Ai);
+  return sonine_moment_pair_from(sonine_moment_beta_polynomials(beta, order), weight, beta, Ak, Ai, order);
 }
 
 namespace {

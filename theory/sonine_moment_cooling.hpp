@@ -27,13 +27,14 @@
 
 namespace granmix::theory {
 
-// The rates of ⟨c^(2p)⟩_k, p = 1..3, at fixed θ_k from collisions with species i, per unit Sonine coefficient:
-// entry (p − 1)·5 + source, sources Maxwell, own a₂, own a₃, partner's a₂, partner's a₃ (sonine_moment_table.hpp);
-// weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i + m_k), A = T/m of k and i.
-SonineMomentRates sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai);
-// The same from the table's polynomials in β = μ_ik(1 + ε) (constant per pair: callers keep them).
-std::vector<double> sonine_moment_beta_polynomials(double beta);
-SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai);
+// The rates of ⟨c^(2p)⟩_k, p = 1..4, at fixed θ_k from collisions with species i, per unit Sonine coefficient:
+// entry (p − 1)·7 + source, sources Maxwell, own a₂, a₃, a₄, partner's a₂, a₃, a₄ (sonine_moment_table.hpp);
+// weight = n_i σ_ki² χ_ki, mu = μ_ik = m_i/(m_i + m_k), A = T/m of k and i. order 2 or 3: only the entries of
+// p ≤ 3 and a₂, a₃ (the rest NaN, as sonine_moment_quadrature's), from a table of those rows alone.
+SonineMomentRates sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai, int order = sonine_moment_max);
+// The same from the table's polynomials in β = μ_ik(1 + ε) (constant per pair: callers keep them), of the same order.
+std::vector<double> sonine_moment_beta_polynomials(double beta, int order);
+SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai, int order);
 
 // From this many species the pair terms of a right-hand side are assembled on OpenMP threads (species by species):
 // ~0.15 µs per pair at constant ε, so 16 species take ~40 µs, well above a fork and join; v1 Fig. 8's 43 species

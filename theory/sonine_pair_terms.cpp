@@ -42,14 +42,14 @@ class ClosedFormTerms final : public SoninePairTerms {
       cached = {beta, modes, sources, sonine_cpq_beta_polynomials(beta, modes, sources)};
     return finish(sonine_pair_integrals_from(cached.polys, weight, beta, Tk / mk, Ti / mi, modes, sources), eps, mk, mi, Tk, Ti, partner_sonine);
   }
-  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int) const override {
-    // The moment table's β polynomials per ordered pair (β fixed within an integration), made on first use.
+  SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int order) const override {
+    // The moment table's β polynomials per ordered pair (β and the order fixed within an integration), made on first use.
     const double beta = mi / (mi + mk) * (1.0 + law_.eps(k, i));
     const std::size_t N = law_.size();
     std::call_once(moment_polys_made_, [&] { moment_polys_.resize(N * N); });  // moments() runs on threads (concurrent)
     BetaPolynomials& cached = moment_polys_[k * N + i];
-    if (cached.beta != beta) cached = {beta, 0, 0, sonine_moment_beta_polynomials(beta)};
-    return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi);
+    if (cached.beta != beta || cached.modes != std::size_t(order)) cached = {beta, std::size_t(order), 0, sonine_moment_beta_polynomials(beta, order)};
+    return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi, order);
   }
 
  private:
@@ -66,7 +66,7 @@ class ClosedFormTerms final : public SoninePairTerms {
   static constexpr std::size_t cached_species = 300;  // as SonineDecay's pair cache
   struct BetaPolynomials {
     double beta = -1.0;
-    std::size_t modes = 0;
+    std::size_t modes = 0;  // the C_pq's modes, or the moment table's order
     unsigned sources = 0;
     std::vector<double> polys;
   };
