@@ -88,7 +88,7 @@ TEST_CASE("Sonine moments: the H(p, source) table equals a quadrature over both 
   }
 }
 
-TEST_CASE("Sonine moments: the order-3 table is the full table's entries of p <= 3 and a2, a3, bit for bit; the rest NaN", "[theory]") {
+TEST_CASE("Sonine moments: the order-3 table is the full table's entries of p <= 3 and a2, a3, bit for bit, the rest NaN", "[theory]") {
   // The order-3 closure evaluates a table of the rows it carries alone (75 of 176 groups): each entry must be the same
   // terms summed in the same order as in the full table, and the entries order 3 does not carry (⟨c⁸⟩, the a₄
   // sources) NaN, so that a closure reading one would show it.
