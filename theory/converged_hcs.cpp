@@ -283,7 +283,8 @@ constexpr double to_change = 1e-2;  // each variant's change to ~1% (Settings::r
 ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
   const Start start = sonine_start(rates);
   const model::Mixture& mix = rates.mixture();
-  static const CollisionRule rule(speed_grid_rule_points), finer(fine_rule_points);
+  // The moments alone: 3 speeds per knot interval (tracer_speed_grid.hpp; the distributions below keep 4).
+  static const CollisionRule rule(speed_grid_rule_points, moment_collision_speeds), finer(fine_rule_points, moment_collision_speeds);
   const State best = settle(rates, start.state, {speed_grid_widths, 1.0, &rule, Partners::sonine});
 
   ConvergedHcs out;

@@ -36,6 +36,10 @@ double spline_slope(double x) {
   return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
 }
 
+// A rest's masses per knot interval (speed_density_rest): 2 Gauss points, half the partner nodes of the 4 of speed_rule
+// at the same accuracy — the rest's direction rule (4 points) sets it (tracer_speed_grid.hpp).
+constexpr std::size_t rest_points = 2;
+
 const GaussRule& speed_rule() {
   static const GaussRule uq = legendre(speed_points, 0.0, 1.0);
   return uq;
@@ -90,12 +94,13 @@ struct Spheres {
 // Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
 // blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
 // alone. Every σ̂ integral is exact (sphere_gain.hpp: v′ uniform on a sphere of radius R about c); the partner's
-// velocities w go through the collision rule. The loss term N_m(u) Σ w is the same spline values for every gas
-// velocity, so it is subtracted once per u.
+// velocities w go through the collision rule, the speeds u of the collision integrals through its uq (CollisionRule::
+// speeds), the splines' polynomial integrals through speed_rule. The loss term N_m(u) Σ w is the same spline values for
+// every gas velocity, so it is subtracted once per u.
 template <bool full>
-[[gnu::always_inline]] inline void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
-                                            Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
-  const GaussRule& uq = speed_rule();
+[[gnu::always_inline]] inline void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
+                                            std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
+                                            IntervalMoments& out) {
   const std::size_t nb = std::size_t(coll.rows()), nodes = gas.size();
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
   Spheres sp(nodes, full);
@@ -156,11 +161,19 @@ template <bool full>
     }
     for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
       const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
-      for (int n = 0; n < 4; ++n) out.m[c][n] += Nj * std::pow(u, 2 * n);
-      out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][6] += Nj * u, out.m[c][7] += Nj * G4;
+      out.m[c][4] += Nj * G, out.m[c][5] += Nj * H, out.m[c][7] += Nj * G4;
       for (std::size_t m = 0; m < nb; ++m) coll(Eigen::Index(m), Eigen::Index(c)) += Nj * C[m];
       if constexpr (full)
         for (std::size_t m = 0; m < nb; ++m) coll1(Eigen::Index(m), Eigen::Index(c)) += Nj * C1[m];
+    }
+  }
+  const GaussRule& poly = speed_rule();  // the integrals of splines times powers of u
+  for (std::size_t q = 0; q < poly.x.size(); ++q) {
+    const double u = (double(i) + poly.x[q]) * h, wu = poly.weight[q] * h;
+    for (std::size_t c = 0; c < 4; ++c) {  // trial function i + c
+      const double Nj = spline(u / h - double(i + c) + 3.0) * wu;
+      for (int n = 0; n < 4; ++n) out.m[c][n] += Nj * std::pow(u, 2 * n);
+      out.m[c][6] += Nj * u;
       for (std::size_t r = 0; r < 4; ++r) {  // test functions i + r, nonzero at u
         const double Nm = spline(u / h - double(i + r) + 3.0);
         out.drift[r][c] += Nj * u * spline_slope(u / h - double(i + r) + 3.0) / h;
@@ -188,7 +201,8 @@ GaussRule legendre(std::size_t n, double a, double b) {
   return r;
 }
 
-CollisionRule::CollisionRule(std::size_t n) : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)) {}
+CollisionRule::CollisionRule(std::size_t n, std::size_t speeds_per_interval)
+    : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), speeds(legendre(speeds_per_interval, 0.0, 1.0)) {}
 
 SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
   const model::Mixture& mix = rates.mixture();
@@ -215,13 +229,15 @@ Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, cons
 
 // The two kinds of interval, each built for AVX2 and AVX-512 too (vector_clones.hpp: this file has no FMA contraction,
 // so every build gives the same numbers; byte-identical outputs measured on v1 Fig. 7, ~9% faster on one thread).
-GRANMIX_VECTOR_CLONES void density_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
-                                            Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
-  interval<false>(p, gas, h, i, coll, coll1, out);
+GRANMIX_VECTOR_CLONES void density_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
+                                            std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
+                                            IntervalMoments& out) {
+  interval<false>(p, gas, uq, h, i, coll, coll1, out);
 }
-GRANMIX_VECTOR_CLONES void full_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, double h, std::size_t i,
-                                         Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1, IntervalMoments& out) {
-  interval<true>(p, gas, h, i, coll, coll1, out);
+GRANMIX_VECTOR_CLONES void full_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
+                                         std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
+                                         IntervalMoments& out) {
+  interval<true>(p, gas, uq, h, i, coll, coll1, out);
 }
 
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule, SpeedGridParts parts) {
@@ -237,9 +253,9 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
     const auto cols = Eigen::Index(4 * i);
     auto c1 = full ? coll1.middleCols(cols, 4) : coll1.middleCols(0, 0);
     if (full)
-      full_interval(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      full_interval(p, gas, rule.speeds, h, i, coll.middleCols(cols, 4), c1, moments[i]);
     else
-      density_interval(p, gas, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      density_interval(p, gas, rule.speeds, h, i, coll.middleCols(cols, 4), c1, moments[i]);
   });
   SpeedGrid g;
   g.h = h;
@@ -276,7 +292,7 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
 }
 
 SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r) {
-  const GaussRule& uq = speed_rule();
+  static const GaussRule uq = legendre(rest_points, 0.0, 1.0);
   const std::size_t nb = std::size_t(g.gram.rows()), K = nb - 3;
   const double norm = g.mass.dot(P), a = m / (2.0 * r.theta), maxwell = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
   SpeedDensityRest out{r.theta, {}};

@@ -32,11 +32,22 @@ inline constexpr std::size_t speed_grid_rule_points = 12;
 
 // The collision quadrature over the partner's velocity: n points in w_z (Gauss–Hermite) and |w_⊥|² (Gauss–Laguerre).
 // σ̂ needs none: every σ̂ integral of the grid is exact (sphere_gain.hpp; before 2026-12-05 a rule of n/2 points in
-// cos θ and 3n/4 azimuths).
+// cos θ and 3n/4 azimuths). And over the species' own speed u: `speeds` Gauss points per knot interval for the collision
+// integrals ∫ N_j(u) C_m(u) du (and G, H, G₄), whose cost is per point and node; the splines' polynomial integrals
+// (Gram, drift, moments) take 4 whatever it is, exact for the Gram matrix.
+//   4 speeds: every solve whose density matters pointwise or whose grid is near its limit. 3 speeds
+// (moment_collision_speeds): the converged HCS's moments. Measured against 4 (2026-12-06): γ and the T ratios of v1
+// Figs. 4, 5, 7 and MG's μ = 2, 4 binaries move by ≤ 5.1e-8, the c_k by ≤ 1.2e-5 (v1 Fig. 4 at n₂ = 0.01; ≤ 1.2e-8 and
+// 3.6e-7 elsewhere) — ≤ 3.6e-5 and 2.6e-4 of the grid's estimated error (converged_hcs.hpp) — and the D ratios of every
+// kinetic-converged-hcs scene by ≤ 1.9e-5 of the model error computed at each point (6 speeds: 4's numbers to ten
+// digits; 2: 1% of the grid's estimate). Not for the settled distributions: MG Fig. 7's Φ at v* = 2.55–2.85 (Φ ~ 1e-6)
+// moved by up to 21× its computed model error (4 against 6 or 8: ≤ 0.5% of it); nor the heavy intruder's θ (v2 Fig. 5:
+// 2.6e-6, beyond the 1e-6 model error of its early MSD).
 struct CollisionRule {
-  GaussRule wz, wp;
-  explicit CollisionRule(std::size_t n);
+  GaussRule wz, wp, speeds;
+  explicit CollisionRule(std::size_t n, std::size_t speeds_per_interval = 4);
 };
+inline constexpr std::size_t moment_collision_speeds = 3;
 
 // A partner velocity w = (w_x, 0, w_z) with a signed weight (probability per partner): what a partner's density holds
 // beyond its Sonine shape, as point masses (converged_hcs.cpp's full partners).
@@ -95,18 +106,23 @@ struct SpeedMoments {
 SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
 
 // What a speed density P of this grid (species of mass m, its speed_moments r: θ, a₂, a₃) holds beyond the Maxwellian
-// at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at the grid's Gauss points
-// (4 per knot interval, the rule of its moments, so the masses' moments of u⁰, u², u⁴, u⁶ vanish to rounding), pruned
-// below 1e-8 of the largest (1e-6 moves nothing at five digits).
+// at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at 2 Gauss points per
+// knot interval, pruned below 1e-8 of the largest (1e-6 moves nothing at five digits). Their sums of u⁰ and u² are ≤
+// 8.6e-7 and 2.2e-5 of the sums of |mass| and |mass|u² (4 points, the rule of the grid's moments: 8.5e-7, 1.4e-5).
 struct SpeedDensityRest {
   double theta = 1.0;
   std::vector<std::array<double, 2>> masses;  // (speed, mass), ∫P = 1
 };
 SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r);
 // Those masses as a partner at temperature T (speeds scaled by √(T/θ): the shape kept), the directions of w by a
-// 4-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). The rest is
-// smooth in α: v1 Fig. 4 at n₂ = 0.01, its effect on T₂/T₁ with 4 / 6 / 8 / 12 points 1.40451 / 1.40307 / 1.40289 /
-// 1.40285% (measured 2026-12-05) — 0.1%, where converged_hcs's check needs its change to ~1%.
+// 4-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). How well, as
+// the rest's effect on the converged HCS (its T ratio, a₂ and the D ratios' partner part, converged_hcs.hpp), over v1
+// Figs. 4 (n₂ = 0.01, 0.1), 5 (ε = 0.2, 0.8), 7 (ε = 0.2, 0.5, 0.8) and MG's μ = 2, 4 binaries against 4 speeds per
+// interval and 12 directions (measured 2026-12-06): the direction rule sets it — 4 directions within 4.6% (v1 Fig. 5,
+// ε = 0.8: the D ratio's part 1.176e-5 against 1.124e-5; v1 Fig. 4 at n₂ = 0.01, T₂/T₁'s 1.3628% against 1.3612%),
+// 6 within 1.1% — and 2 speeds per interval move each by ≤ 0.6% from 4 (8: the same to five digits), at half the
+// partner nodes (448 per pair, v1 Fig. 7). converged_hcs's check needs its change to a few percent: a part of a
+// computed model error (v1 Fig. 7: ≤ 1.3e-4 of D_k/D_1 beside a total of ≤ 1.6e-3).
 std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T);
 
 // The n-point Gauss–Legendre rule on [a, b] (GSL's fixed tables).
