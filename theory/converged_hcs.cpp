@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -119,9 +120,11 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
     const double f1 = theta_at(z1, &m);
     // θ(ζ) carries the solve's rounding, ~1e-12 relative at strong dissipation (v1 Fig. 5, ε = 0.1: the secant then
     // wandered in it until it gave up); 1e-11 is far inside the passes' settled 1e-8.
-    if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu)
-      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid, mix[k].mass, P, m) : SpeedDensityRest{}, grid.h,
-              P / grid.mass.dot(P)};
+    if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu) {
+      const Eigen::VectorXd density = P / grid.mass.dot(P);
+      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid.h, mix[k].mass, density, m) : SpeedDensityRest{},
+              grid.h, density};
+    }
     if (f1 == f0) break;
     const double z2 = z1 - f1 * (z1 - z0) / (f1 - f0);
     z0 = z1, f0 = f1, z1 = z2;
@@ -170,10 +173,16 @@ State settle(const CollisionRates& rates, State s, const Settings& set) {
   Eigen::MatrixXd& J = s.jacobian;
   Eigen::VectorXd dx_prev, r_prev;
   double stop_rates = settled_rates, stop_shapes = settled_shapes, stop_rest = settled_shapes;
-  // Partners::full from a state without rests: the first pass sees Sonine partners and finds the rests; the residuals
-  // that measure the change start with the second.
+  // Partners::full from a state without rests (a Sonine-partners solve): its rests from the densities it holds, at the
+  // temperatures and shapes it settled to (a pass with Sonine partners, until 2026-12-06, found the same to ~1e-8).
   const bool full = set.partners == Partners::full;
-  const int first_measured = full && s.rest.empty() ? 2 : 1;
+  if (full && s.rest.empty()) {
+    constexpr double unused = std::numeric_limits<double>::quiet_NaN();  // the gas side's moments: not read
+    if (s.density.size() != N) throw std::logic_error("converged HCS: full partners need a solved state's densities");
+    for (std::size_t k = 0; k < N; ++k)
+      s.rest.push_back(speed_density_rest(s.density[k].first, rates.mixture()[k].mass, s.density[k].second,
+                                          {s.T[k], s.shapes[k].a2, s.shapes[k].a3, unused, unused, unused}));
+  }
   std::vector<double> a4(N, 0.0);
   for (std::size_t k = 0; k < s.rest.size(); ++k) a4[k] = rest_a4(s.rest[k], rates.mixture()[k].mass);
   for (int pass = 1; pass <= max_passes; ++pass) {
@@ -196,16 +205,16 @@ State settle(const CollisionRates& rates, State s, const Settings& set) {
     for (std::size_t k = 1; k < N; ++k) r[Eigen::Index(k - 1)] = (zeta[k] - zeta[0]) / nu;
     s.zeta0 = zeta[0], s.passes = pass;
     const double moved = r.tail(Eigen::Index(2 * N)).cwiseAbs().maxCoeff(), off = n == 0 ? 0.0 : r.head(Eigen::Index(n)).cwiseAbs().maxCoeff();
-    if (pass == first_measured) {
+    if (pass == 1) {
       stop_rates = std::max(stop_rates, set.relative_stop * off), stop_shapes = std::max(stop_shapes, set.relative_stop * moved);
       stop_rest = std::max(stop_rest, set.relative_stop * rest_moved);
     }
-    if (pass >= first_measured && off < stop_rates && moved < stop_shapes && rest_moved <= stop_rest) {
+    if (off < stop_rates && moved < stop_shapes && rest_moved <= stop_rest) {
       for (std::size_t k = 0; k < N; ++k) s.shapes[k].a2 += r[Eigen::Index(n + k)], s.shapes[k].a3 += r[Eigen::Index(n + N + k)];
       return s;
     }
-    // Broyden (not across the pass where the rests first enter: that jump in r is no response to the step)
-    if (dx_prev.size() != 0 && pass != first_measured) J += ((r - r_prev) - J * dx_prev) * dx_prev.transpose() / dx_prev.squaredNorm();
+    // Broyden
+    if (dx_prev.size() != 0) J += ((r - r_prev) - J * dx_prev) * dx_prev.transpose() / dx_prev.squaredNorm();
     const Eigen::VectorXd dx = -J.fullPivLu().solve(r);
     if (!dx.allFinite()) throw NumericalError("converged HCS: the quasi-Newton step is not finite");
     for (std::size_t k = 1; k < N; ++k) s.T[k] *= std::exp(dx[Eigen::Index(k - 1)]);

@@ -291,18 +291,17 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
           g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2), g.gain4.dot(P) / norm};
 }
 
-SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r) {
+SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r) {
   static const GaussRule uq = legendre(rest_points, 0.0, 1.0);
-  const std::size_t nb = std::size_t(g.gram.rows()), K = nb - 3;
-  const double norm = g.mass.dot(P), a = m / (2.0 * r.theta), maxwell = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
+  const std::size_t K = std::size_t(P.size()) - 3;
+  const double a = m / (2.0 * r.theta), maxwell = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
   SpeedDensityRest out{r.theta, {}};
   double largest = 0.0;
   for (std::size_t i = 0; i < K; ++i)
     for (std::size_t q = 0; q < uq.x.size(); ++q) {
-      const double u = (double(i) + uq.x[q]) * g.h, x = a * u * u;
-      const double density = speed_density_at(g.h, P, u);
+      const double u = (double(i) + uq.x[q]) * h, x = a * u * u;
       const double sonine = maxwell * u * u * std::exp(-x) * (1.0 + r.a2 * sonine_S2(x) + r.a3 * sonine_S3(x));
-      const double mass = (density / norm - sonine) * uq.weight[q] * g.h;
+      const double mass = (speed_density_at(h, P, u) - sonine) * uq.weight[q] * h;
       out.masses.push_back({u, mass}), largest = std::max(largest, std::abs(mass));
     }
   std::erase_if(out.masses, [&](const std::array<double, 2>& e) { return std::abs(e[1]) < 1e-8 * largest; });

@@ -105,7 +105,7 @@ struct SpeedMoments {
 };
 SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
 
-// What a speed density P of this grid (species of mass m, its speed_moments r: θ, a₂, a₃) holds beyond the Maxwellian
+// What a speed density P (knots h apart, ∫P = 1; species of mass m, its speed_moments r: θ, a₂, a₃) holds beyond the Maxwellian
 // at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at 2 Gauss points per
 // knot interval, pruned below 1e-8 of the largest (1e-6 moves nothing at five digits). Their sums of u⁰ and u² are ≤
 // 8.6e-7 and 2.2e-5 of the sums of |mass| and |mass|u² (4 points, the rule of the grid's moments: 8.5e-7, 1.4e-5).
@@ -113,7 +113,7 @@ struct SpeedDensityRest {
   double theta = 1.0;
   std::vector<std::array<double, 2>> masses;  // (speed, mass), ∫P = 1
 };
-SpeedDensityRest speed_density_rest(const SpeedGrid& g, double m, const Eigen::VectorXd& P, const SpeedMoments& r);
+SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r);
 // Those masses as a partner at temperature T (speeds scaled by √(T/θ): the shape kept), the directions of w by a
 // 4-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). How well, as
 // the rest's effect on the converged HCS (its T ratio, a₂ and the D ratios' partner part, converged_hcs.hpp), over v1
