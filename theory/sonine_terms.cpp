@@ -3,6 +3,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "vector_clones.hpp"
+
 namespace granmix::theory {
 
 namespace {
@@ -33,8 +35,9 @@ SonineMoments sonine_cross(double x_j, double chi_ij, double s_ij, double a, dou
 
 namespace {
 // The loop of sonine_cross_row with every array a restrict parameter (GCC honours restrict on parameters, not on
-// local copies: the six outputs could alias each other, and no vector loop is made).
-void cross_row_kernel(std::size_t n, const double* __restrict w_, const double* __restrict alpha, const double* __restrict mu_,
+// local copies: the six outputs could alias each other, and no vector loop is made). Elementwise +, ×, ÷, √ alone: the
+// AVX2 and AVX-512 builds give the baseline's numbers (vector_clones.hpp).
+GRANMIX_VECTOR_CLONES void cross_row_kernel(std::size_t n, const double* __restrict w_, const double* __restrict alpha, const double* __restrict mu_,
                       double lambda_i, const double* __restrict sqrt_lambda_j, const double* __restrict inv_sqrt_lambda_j,
                       double* __restrict zeta0, double* __restrict zeta_self, double* __restrict zeta_cross, double* __restrict Lambda0,
                       double* __restrict Lambda_self, double* __restrict Lambda_cross) {
