@@ -328,9 +328,16 @@ struct DistributionState {
   Start start;
   State best;
 };
+struct DistributionStates {
+  std::mutex guard;
+  std::map<std::vector<double>, std::shared_ptr<const DistributionState>> solved;
+};
+DistributionStates& distribution_states() {
+  static DistributionStates states;
+  return states;
+}
 std::shared_ptr<const DistributionState> distribution_state(const CollisionRates& rates) {
-  static std::mutex guard;
-  static std::map<std::vector<double>, std::shared_ptr<const DistributionState>> solved;
+  auto& [guard, solved] = distribution_states();
   const std::vector<double> key = rates.key();
   {
     const std::lock_guard<std::mutex> lock(guard);
@@ -347,6 +354,12 @@ std::shared_ptr<const DistributionState> distribution_state(const CollisionRates
 }
 
 }  // namespace
+
+void forget_converged_distributions() {
+  DistributionStates& states = distribution_states();
+  const std::lock_guard<std::mutex> lock(states.guard);
+  states.solved.clear();
+}
 
 SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant) {
   refuse_viscoelastic(rates);

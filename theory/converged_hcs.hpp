@@ -81,5 +81,8 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
 inline constexpr std::size_t distribution_rule_points = 64;
 enum class DistributionVariant { solved, sparser_knots, coarser_rule, partners_full, wider_domain };
 SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant);
+// Forgets the distributions' states solved so far (the next converged_distribution solves again): for a benchmark's
+// repeats, each of which should pay the solve as a run of `granmix theory` does.
+void forget_converged_distributions();
 
 }  // namespace granmix::theory
