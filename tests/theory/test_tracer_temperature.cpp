@@ -121,7 +121,7 @@ TEST_CASE("intruder temperature: v2 Fig. 5's intruders heating the gas, self-con
   CHECK(std::abs(dilute.theta / tracer.theta - 1.0) < 1e-5);
 }
 
-TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary density's moments, 2 do not; its far tail needs 4", "[theory]") {
+TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary density's moments, 2 do not, and its far tail needs 4", "[theory]") {
   // CollisionRule::speeds (tracer_speed_grid.hpp): the converged HCS's moment solves take 3 Gauss points in u per knot
   // interval, every pointwise density 4. Against 8, an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian
   // gas at the paper's ζ (K = 56 knots over 7 widths, as the solves): measured 2026-12-06, 3 speeds θ ≤ 6.8e-9, a₂ ≤
