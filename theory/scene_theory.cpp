@@ -159,9 +159,8 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
     return out;
   };
   std::vector<std::vector<std::vector<double>>> rows(sw.values.size());
-  // The DSMC points first: with their error estimates each costs ~4 others (v1 Fig. 7), and started last one of them
-  // would leave a thread idle at the end (2 threads: 0.97 → ~0.89 s of v1 Fig. 7's 1.77 s of work, ideal 0.885). The
-  // rows stay in sweep order.
+  // The DSMC points first: with their error estimates each costs ~4 plain points (v1 Fig. 7), and one of them started
+  // late keeps a thread busy while the other idles. The rows stay in sweep order.
   std::vector<std::size_t> order(sw.values.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
   std::stable_partition(order.begin(), order.end(), [&](std::size_t j) {
