@@ -127,13 +127,15 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   // The points on OpenMP threads, each wholly on one with a level object of its own (a level keeps a memo: one per
   // thread), their rows then in sweep order: the numbers do not depend on the thread count. (Each of v1 Fig. 7's 11
   // points solves the four species' converged HCS and tracer problems.)
+  // A DSMC point with the level's error estimates (the points are on the sweep's grid exactly: model/scene.cpp).
+  auto is_checked = [&](double x) { return errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end(); };
   auto point_rows = [&](double x) {
     std::vector<std::vector<double>> out;
     const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
     std::vector<double> error(N, nan);
-    const bool checked = errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end();
+    const bool checked = is_checked(x);
     if (o.d_ratio) {
       const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);
       // Asked first: the level keeps the checked state for the D and increments that follow. (The DSMC points are on
@@ -163,9 +165,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   // late keeps a thread busy while the other idles. The rows stay in sweep order.
   std::vector<std::size_t> order(sw.values.size());
   std::iota(order.begin(), order.end(), std::size_t(0));
-  std::stable_partition(order.begin(), order.end(), [&](std::size_t j) {
-    return errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), sw.values[j]) != s.dsmc.at.end();
-  });
+  std::stable_partition(order.begin(), order.end(), [&](std::size_t j) { return is_checked(sw.values[j]); });
   parallel_each(order.size(), [&](std::size_t n) {
     const std::size_t j = order[n];
     try {

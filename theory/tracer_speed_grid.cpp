@@ -18,7 +18,6 @@ namespace granmix::theory {
 namespace {
 
 constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-constexpr std::size_t speed_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
 // The cardinal cubic B-spline on [0, 4] and its derivative.
 double spline(double x) {
   if (x <= 0.0 || x >= 4.0) return 0.0;
@@ -41,7 +40,7 @@ double spline_slope(double x) {
 constexpr std::size_t rest_points = 2;
 
 const GaussRule& speed_rule() {
-  static const GaussRule uq = legendre(speed_points, 0.0, 1.0);
+  static const GaussRule uq = legendre(speed_grid_interval_points, 0.0, 1.0);
   return uq;
 }
 

@@ -43,9 +43,10 @@ inline constexpr std::size_t speed_grid_rule_points = 12;
 // digits; 2: 1% of the grid's estimate). Not for the settled distributions: MG Fig. 7's Φ at v* = 2.55–2.85 (Φ ~ 1e-6)
 // moved by up to 21× its computed model error (4 against 6 or 8: ≤ 0.5% of it); nor the heavy intruder's θ (v2 Fig. 5:
 // 2.6e-6, beyond the 1e-6 model error of its early MSD).
+inline constexpr std::size_t speed_grid_interval_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
 struct CollisionRule {
   GaussRule wz, wp, speeds;
-  explicit CollisionRule(std::size_t n, std::size_t speeds_per_interval = 4);
+  explicit CollisionRule(std::size_t n, std::size_t speeds_per_interval = speed_grid_interval_points);
 };
 inline constexpr std::size_t moment_collision_speeds = 3;
 
