@@ -13,7 +13,11 @@ TermTable::TermTable(const std::vector<Term>& rows) {
     groups_.back().beta[std::size_t(r.ib)] = r.coefficient;  // rows sorted by entry, ia, ib
     groups_.back().degree = std::max(groups_.back().degree, r.ib);
   }
-  for (const Group& g : groups_) entry_.push_back(g.entry), a_index_.push_back((unsigned char)(g.a_index));
+  for (std::size_t j = 0; j < groups_.size(); ++j) {
+    if (runs_.empty() || runs_.back().entry != groups_[j].entry) runs_.push_back({groups_[j].entry, j});
+    runs_.back().end = j + 1;
+    a_index_.push_back((unsigned char)(groups_[j].a_index));
+  }
 }
 
 std::vector<double> TermTable::beta_polynomials(double beta, std::size_t groups) const {
@@ -38,9 +42,17 @@ void TermTable::evaluate(const std::vector<double>& polys, double a, double* out
   apow[a_lowest] = 1.0;
   for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
   for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
-  const unsigned* entry = entry_.data();
   const unsigned char* a_index = a_index_.data();
-  for (std::size_t j = 0; j < polys.size(); ++j) out[entry[j]] += polys[j] * apow[a_index[j]];
+  const double* poly = polys.data();
+  const std::size_t n = polys.size();  // a prefix of the groups
+  std::size_t j = 0;
+  for (const Run& r : runs_) {
+    if (j == n) break;
+    const std::size_t end = std::min(r.end, n);
+    double sum = out[r.entry];
+    for (; j < end; ++j) sum += poly[j] * apow[a_index[j]];
+    out[r.entry] = sum;
+  }
 }
 
 }  // namespace granmix::theory
