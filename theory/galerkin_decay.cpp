@@ -15,11 +15,15 @@ namespace granmix::theory {
 namespace {
 
 constexpr double weight_temperature = 2.0;  // λ of the test weight (tracer_diffusion_galerkin.hpp: why 2)
+// add_collisions requests the cache lines of the node this many terms ahead (v1 Fig. 8 on one thread, 2026-12-06:
+// none 2.43 s, 1 ahead 2.19, 2 ahead 2.16–2.26, 4 ahead 2.17–2.26 — the nodes lie apart in memory, 768 bytes each).
+constexpr std::size_t prefetch_ahead = 2;
 
-// o[e] += c0·s0[e] + c2·s2[e] + c3·s3[e]: one table node's three sources (elementwise: the same numbers in every build).
-GRANMIX_VECTOR_CLONES void add_node(double* o, std::size_t entries, double c0, const double* s0, double c2, const double* s2, double c3,
-                                    const double* s3) {
-  for (std::size_t e = 0; e < entries; ++e) o[e] += c0 * s0[e] + c2 * s2[e] + c3 * s3[e];
+// o[e] += c0·s[e] + c2·s[E + e] + c3·s[2E + e], E = entries: one table node's three sources (elementwise, in double:
+// the same numbers in every build).
+GRANMIX_VECTOR_CLONES void add_node(double* o, std::size_t entries, double c0, double c2, double c3, const GalerkinPairTables::Value* s) {
+  const GalerkinPairTables::Value *s2 = s + entries, *s3 = s + 2 * entries;
+  for (std::size_t e = 0; e < entries; ++e) o[e] += c0 * double(s[e]) + c2 * double(s2[e]) + c3 * double(s3[e]);
 }
 
 }  // namespace
@@ -35,6 +39,7 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
   for (std::size_t k = 0; k < N; ++k) {
     Species sp;
     sp.basis = collision_weighted_basis(size, converged_basis_x0(rates, k, T_ref.data()));
+    sp.smooth = sp.basis.hermite_points < RadialBasis{}.hermite_points;
     const GalerkinAverages avg = galerkin_averages(sp.basis, weight_temperature);
     const Eigen::MatrixXd Phi = m_orthonormal_basis(avg.M);
     sp.kept = std::size_t(Phi.cols());
@@ -65,8 +70,7 @@ GalerkinDecay::GalerkinDecay(const CollisionRates& rates, const std::vector<doub
       sum += share[i] = mix[i].density * s * s * rates.chi(k, i) * std::sqrt(T_ref[k] / mix[k].mass + T_ref[i] / mix[i].mass) *
                         mix[i].mass / (mix[i].mass + mix[k].mass);
     }
-    const bool smooth = species_[k].basis.hermite_points < RadialBasis{}.hermite_points;  // x₀ past the finest rule's tier
-    const double limit = coarse_share * (smooth ? smooth_basis_share_factor : 1.0);
+    const double limit = coarse_share * (species_[k].smooth ? smooth_basis_share_factor : 1.0);
     for (std::size_t i = 0; i < N; ++i) coarse_[k * N + i] = share[i] < limit * sum;
   }
   // Diffusive at the reference state (Maxwellian partners, ζ = ξ_k): every eigenvalue of Ã decays (Ã is similar to
@@ -91,7 +95,7 @@ GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i,
   Eigen::MatrixXd G[3] = {Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n), Eigen::MatrixXd::Zero(n, n)};
   const double th = viscoelastic_ ? theta_k : 0.5;
   RadialBasis basis = sp.basis;
-  if (coarse_[k * rates_.size() + i]) basis.hermite_points = 20, basis.laguerre_points = 12;
+  if (coarse_[k * rates_.size() + i]) basis.hermite_points = 20, basis.laguerre_points = 12, basis.speed_points = coarse_speed_points;
   add_pair_collisions(rates_, k, i, th, rho * th, basis, weight_temperature, shapes, 3, G);
   Sources out;
   const double unscale = 1.0 / std::sqrt(2.0 * th);
@@ -99,14 +103,20 @@ GalerkinDecay::Sources GalerkinDecay::pair_sources(std::size_t k, std::size_t i,
   return out;
 }
 
+double GalerkinDecay::grid_step(std::size_t pair) const {
+  if (coarse_[pair]) return coarse_grid_factor * pair_grid_step;
+  return species_[pair / rates_.size()].smooth ? smooth_basis_grid_step : pair_grid_step;
+}
+
 void GalerkinDecay::stencil(std::size_t k, std::size_t i, const double* T, std::vector<std::pair<Node, double>>& out) const {
   const model::Mixture& mix = rates_.mixture();
   const double theta_k = T[k] / mix[k].mass, rho = T[i] / mix[i].mass / theta_k;
-  const CatmullRom r = catmull_rom(std::log(rho) / pair_grid_step, "converged velocity memory: temperature ratio");
+  const CatmullRom r = catmull_rom(std::log(rho) / grid_step(k * rates_.size() + i), "converged velocity memory: temperature ratio");
   const CatmullRom h = viscoelastic_ ? catmull_rom(std::log(theta_k) / scale_grid_step, "converged velocity memory: temperature")
                                     : CatmullRom{0, 1, {1.0, 0.0, 0.0, 0.0}};
+  const double flux = std::sqrt(weight_temperature + rho);  // the tables hold each source over it (pair_grid_step)
   for (int a = 0; a < h.count; ++a)
-    for (int j = 0; j < r.count; ++j) out.push_back({{h.first + a, r.first + j}, h.w[a] * r.w[j]});
+    for (int j = 0; j < r.count; ++j) out.push_back({{h.first + a, r.first + j}, flux * h.w[a] * r.w[j]});
 }
 
 void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
@@ -141,16 +151,21 @@ void GalerkinDecay::prefetch(const double* T, std::size_t species) const {
   terms_.resize(stencils_.size());
   for (std::size_t p = 0; p < N * N; ++p)
     for (std::size_t j = first_term_[p], last = have_last ? last_first_term_[p] : 0; j < first_term_[p + 1]; ++j, ++last)
-      terms_[j] = {relook_[p] ? &tables_->pairs[p].find(stencils_[j].first)->second : last_terms_[last].sources, stencils_[j].second};
+      terms_[j] = {relook_[p] ? tables_->pairs[p].find(stencils_[j].first)->second.data() : last_terms_[last].sources, stencils_[j].second};
 }
 
 void GalerkinDecay::compute(const std::vector<std::pair<std::size_t, Node>>& missing) const {
   const std::size_t N = rates_.size();
-  std::vector<Sources> computed(missing.size());
+  std::vector<GalerkinPairTables::Stored> computed(missing.size());
   parallel_each(missing.size(), [&](std::size_t m) {
     const Node& at = missing[m].second;
-    computed[m] = pair_sources(missing[m].first / N, missing[m].first % N, std::exp(double(at.first) * scale_grid_step),
-                               std::exp(double(at.second) * pair_grid_step));
+    const double rho = std::exp(double(at.second) * grid_step(missing[m].first));
+    const Sources s = pair_sources(missing[m].first / N, missing[m].first % N, std::exp(double(at.first) * scale_grid_step), rho);
+    const double unflux = 1.0 / std::sqrt(weight_temperature + rho);
+    const auto entries = std::size_t(s[0].size());
+    computed[m].resize(3 * entries);
+    for (std::size_t j = 0; j < 3; ++j)
+      for (std::size_t e = 0; e < entries; ++e) computed[m][j * entries + e] = GalerkinPairTables::Value(s[j].data()[e] * unflux);
   });
   for (std::size_t m = 0; m < missing.size(); ++m) tables_->pairs[missing[m].first].emplace(missing[m].second, std::move(computed[m]));
 }
@@ -167,14 +182,16 @@ void GalerkinDecay::add_collisions(std::size_t k, const double* T, const double*
       for (std::size_t j = 0; j < 3; ++j) out += w[j] * s[j];
       continue;
     }
-    // The three sources of each node in one pass over the entries (this loop reads ~N²·4 nodes per right-hand side).
+    // The three sources of each node in one pass over the entries (this loop reads ~N²·4 nodes per right-hand side,
+    // each apart in memory: the node `ahead` terms on is fetched meanwhile, its cache lines requested now).
     double* o = out.data();
-    const std::size_t entries = std::size_t(out.size());
+    const std::size_t entries = std::size_t(out.size()), last = first_term_[k * N + N];
     for (std::size_t j = first_term_[k * N + i]; j < first_term_[k * N + i + 1]; ++j) {
-      const Sources& p = *terms_[j].sources;
-      const double c0 = w[0] * terms_[j].weight, c2 = w[1] * terms_[j].weight, c3 = w[2] * terms_[j].weight;
-      const double *s0 = p[0].data(), *s2 = p[1].data(), *s3 = p[2].data();
-      add_node(o, entries, c0, s0, c2, s2, c3, s3);
+      if (j + prefetch_ahead < last) {
+        const char* next = reinterpret_cast<const char*>(terms_[j + prefetch_ahead].sources);
+        for (std::size_t b = 0; b < 3 * entries * sizeof(GalerkinPairTables::Value); b += 64) __builtin_prefetch(next + b);
+      }
+      add_node(o, entries, w[0] * terms_[j].weight, w[1] * terms_[j].weight, w[2] * terms_[j].weight, terms_[j].sources);
     }
   }
 }

@@ -19,7 +19,7 @@
 //   dU/dt = 2θ_k s − Ã U − (ξ_k/2) U,   s = ΔHΦᵀ r,   Ã = ΔHΦᵀ Aᵀ ΦHΔ⁻¹;   U = 0 at t = 0 (any start).
 // The state enters A_coll only through the pairs: at constant ε partner i contributes √(2θ_k)[G⁰(ρ) + a_i2 G²(ρ) +
 // a_i3 G³(ρ)], ρ = θ_i/θ_k, the pair problem at θ_k = 1/2 (add_pair_collisions). Those are tabulated on a grid in
-// ln ρ (step pair_grid_step) as the history reaches them, 0.07–0.5 ms per node by the pair rule (v1 Fig. 8, AVX-512 machine, 2026-12-06) (those one right-hand side needs on OpenMP
+// ln ρ (steps pair_grid_step, smooth_basis_grid_step; each source over √(λ + ρ)) as the history reaches them, 0.07–0.5 ms per node by the pair rule (v1 Fig. 8, AVX-512 machine, 2026-12-06) (those one right-hand side needs on OpenMP
 // threads together), and interpolated by Catmull–Rom cubics
 // (C¹, so CVODE's Newton iterations see a smooth right-hand side); the basis (x₀) is each species' at the
 // reference temperatures (the level's settled ones) for the whole history, so M, S, Φ and r are fixed.
@@ -42,11 +42,26 @@
 
 namespace granmix::theory {
 
-// The step in ln(θ_i/θ_k) of the pair tables: interpolation error 5e-5 of the operator, 2e-6 of the MSD at settled
-// ratios (tests/theory/test_galerkin_decay.cpp).
+// The step in ln(θ_i/θ_k) of the pair tables. They hold each source over √(λ + ρ), the collision flux's factor
+// (V = θ_k(λ + ρ), add_pair_collisions), which the interpolated operator takes back at the current ρ: what Catmull–Rom
+// interpolates then varies less with ln ρ where the partner is hot. Measured (2026-12-06), the operator's worst entry
+// against the direct assembly, partner shapes on: v1 Fig. 8's 43 species at four states between the equal start and
+// the settled ratios, 1.06e-5 without the factor, 4.2e-6 with it; bo1-fig05's binary (tests/theory/
+// test_galerkin_decay.cpp) 4.8e-5 → 4.2e-5, its light species at ρ = 0.92 (at step 1/6: 4.3e-4, so not for it).
 inline constexpr double pair_grid_step = 0.125;
+// A species of a smooth basis (x₀ ≥ 1.5: its own pair rule 40 × 24 or coarser) takes this step: with the flux factor
+// v1 Fig. 8's 43 species then err by 1.16e-5 (16 species 7.6e-6; at 1/5: 2.0e-5), the error of step 1/8 without the
+// factor, for ~25% fewer of its nodes — v1 Fig. 8's costliest (40 × 24: 4 039 of its 25 275 nodes, 1.0 of 2.7 s).
+inline constexpr double smooth_basis_grid_step = 1.0 / 6.0;
+// A coarse pair (coarse_pair_share) takes twice pair_grid_step and coarse_speed_points impact speeds: its share of the
+// collisions is ≤ 1e-2, and v1 Fig. 8's operator moves by ≤ 1.3e-7 from the step (43 species, the four states above)
+// and ≤ 1e-8 from the speeds (the coarse rule's check in tests/theory/test_galerkin_decay.cpp: 6.82e-6 → 6.83e-6 with
+// 12 speeds; with 10 speeds 1.1e-5, with 8 4.5e-4).
+inline constexpr double coarse_grid_factor = 2.0;
+inline constexpr std::size_t coarse_speed_points = 12;
 // A viscoelastic ε(u) depends on the impact speed itself, so its tables have a second axis, ln θ_k, of this step (ε
-// varies as θ^(1/10); tests/theory/test_galerkin_decay.cpp: worst 2.0e-5 at step 2, 2.2e-5 at step 1; the MSDs of
+// varies as θ^(1/10); tests/theory/test_galerkin_decay.cpp: worst 1.5e-5 at step 2 (2.0e-5 before the tables held each
+// source over √(λ + ρ)), 2.2e-5 at step 1; the MSDs of
 // v1 Figs. 9/10 move ≤ 3e-6 from step 1, with 3/4 of the nodes: 219/612 against 289/787).
 inline constexpr double scale_grid_step = 2.0;
 // A partner whose share of species k's collisions (n_i σ_ki² χ_ki √(θ_k + θ_i) μ_ik over the sum, at the reference
@@ -75,10 +90,16 @@ inline constexpr std::size_t parallel_species = 8;
 struct GalerkinPairTables {
   using Node = std::pair<long, long>;              // grid indices in ln θ_k (0 at constant ε) and ln ρ
   using Sources = std::array<Eigen::MatrixXd, 3>;  // Ã of G⁰, G², G³, over √(2θ_k)
+  // One node's three sources over √(λ + ρ) (pair_grid_step), one after the other (kept² entries each, column-major), in
+  // single precision: a right-hand side of v1 Fig. 8 reads ~7 400 nodes (11 MB in double, beyond the caches; its
+  // kinetic level on one thread 2.26 → 2.15 s, alternated, 2026-12-06), and their rounding, 6e-8 of an entry, is ~200×
+  // below the interpolation's error (1.2e-5 of the operator).
+  using Value = float;
+  using Stored = std::vector<Value>;
   std::vector<double> T_ref;
   std::size_t size = 0;
   double coarse_share = 0.0;
-  std::vector<std::map<Node, Sources>> pairs;  // per ordered pair (k·N + i): node ↦ sources
+  std::vector<std::map<Node, Stored>> pairs;  // per ordered pair (k·N + i): node ↦ sources
 };
 
 class GalerkinDecay final : public VelocityDecay {
@@ -109,10 +130,11 @@ class GalerkinDecay final : public VelocityDecay {
     std::array<Eigen::VectorXd, 3> s;
     std::size_t kept = 0;
     bool diffusive = true;
+    bool smooth = false;  // x₀ past the finest pair rule's tier (smooth_basis_share_factor, smooth_basis_grid_step)
   };
   using Node = GalerkinPairTables::Node;
   struct Term {  // one node of a pair's stencil at the current state
-    const Sources* sources;
+    const GalerkinPairTables::Value* sources;  // GalerkinPairTables::Stored
     double weight;
   };
   static constexpr std::size_t all_species = std::size_t(-1);
@@ -122,6 +144,7 @@ class GalerkinDecay final : public VelocityDecay {
   // lack computed first, together on OpenMP threads.
   void prefetch(const double* T, std::size_t species = all_species) const;
   void compute(const std::vector<std::pair<std::size_t, Node>>& missing) const;  // pair k·N + i and node, into the tables
+  double grid_step(std::size_t pair) const;  // in ln ρ: pair_grid_step, smooth_basis_grid_step or the coarse pairs'
   double first_sonine_rate(std::size_t k, const double* T, const double* xi) const;  // ν_k = τ_v,k⁻¹ + ξ_k/2
   void add_collisions(std::size_t k, const double* T, const double* a2, const double* a3, bool exact, Eigen::MatrixXd& out) const;
 
