@@ -1,7 +1,12 @@
 #include "point_kernels.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
+
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
 
 #include "vector_clones.hpp"
 
@@ -25,6 +30,27 @@ GRANMIX_VECTOR_CLONES void weight_rows(const double* x, std::size_t count, doubl
   for (std::size_t p = 0; p < count; ++p) r[p] = 1.0 / std::sqrt(x[p] + x0);
   for (std::size_t m = first; m < rows; ++m)
     for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
+}
+
+GRANMIX_VECTOR_CLONES void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B) {
+  constexpr std::size_t chunk = 32;  // the points of one pass: their recurrence and weights stay in registers and L1
+  for (std::size_t p0 = 0; p0 < count; p0 += chunk) {
+    const std::size_t n = std::min(chunk, count - p0);
+    const double* xs = x + p0;
+    double r[chunk], prev[chunk], cur[chunk];
+    for (std::size_t j = 0; j < n; ++j) r[j] = 1.0 / std::sqrt(xs[j] + x0);
+    for (std::size_t j = 0; j < n; ++j) prev[j] = 1.0, B[p0 + j] = 1.0 * r[j];
+    if (modes > 1)
+      for (std::size_t j = 0; j < n; ++j) cur[j] = 2.5 - xs[j], B[count + p0 + j] = cur[j] * r[j];
+    for (std::size_t m = 1; m + 1 < modes; ++m) {
+      const double a = 2.0 * double(m) + 2.5, b = double(m) + 1.5, inv = 1.0 / double(m + 1);
+      double* row = B + (m + 1) * count + p0;
+      for (std::size_t j = 0; j < n; ++j) {
+        const double next = ((a - xs[j]) * cur[j] - b * prev[j]) * inv;
+        prev[j] = cur[j], cur[j] = next, row[j] = next * r[j];
+      }
+    }
+  }
 }
 
 GRANMIX_VECTOR_CLONES void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count,
@@ -124,7 +150,72 @@ template <class Vec, class Mem>
   dot_products_of<Vec, Mem, 0>(a, b, count, n, first, len, c, shapes, out);
 }
 
+// shaped_products' block of R rows of a by C rows of b at one group of four h: each entry's four lanes in one Quad, or
+// two Pairs; Fma(x, y, acc) = x·y + acc rounded once, lane by lane.
+template <class Vec, class Mem, class Fma, int R, int C>
+[[gnu::always_inline]] inline void shaped_block(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride,
+                                                std::size_t L, const double* c, std::size_t shapes, std::size_t hb, std::size_t q, std::size_t m,
+                                                double* lanes, Fma fma) {
+  constexpr int W = int(sizeof(Vec) / sizeof(double)), K = 4 / W;
+  Vec t[R][C][K];
+  for (int i = 0; i < R; ++i)
+    for (int j = 0; j < C; ++j)
+      for (int k = 0; k < K; ++k) t[i][j][k] = Vec{};
+  const double* ra[R];
+  const double* rb[C];
+  for (int i = 0; i < R; ++i) ra[i] = a + (q + std::size_t(i)) * count + hb;
+  for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count + hb;
+  for (std::size_t l = 0, off = 0; l < L; ++l, off += stride) {
+    Vec x[R][K], y[C][K];
+    for (int k = 0; k < K; ++k) {
+      for (int i = 0; i < R; ++i) x[i][k] = *reinterpret_cast<const Mem*>(ra[i] + off + std::size_t(k * W));
+      for (int j = 0; j < C; ++j) y[j][k] = *reinterpret_cast<const Mem*>(rb[j] + off + std::size_t(k * W));
+    }
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j)
+        for (int k = 0; k < K; ++k) t[i][j][k] = fma(x[i][k], y[j][k], t[i][j][k]);
+  }
+  for (std::size_t s = 0; s < shapes; ++s) {
+    Vec w[K];
+    for (int k = 0; k < K; ++k) w[k] = *reinterpret_cast<const Mem*>(c + s * stride + hb + std::size_t(k * W));
+    for (int i = 0; i < R; ++i)
+      for (int j = 0; j < C; ++j) {
+        double* to = lanes + ((s * n + q + std::size_t(i)) * n + m + std::size_t(j)) * 4;
+        for (int k = 0; k < K; ++k) {
+          Mem& lane = *reinterpret_cast<Mem*>(to + k * W);
+          lane = fma(w[k], t[i][j][k], lane);
+        }
+      }
+  }
+}
+
+template <class Vec, class Mem, class Fma>
+[[gnu::always_inline]] inline void shaped_products_of(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride,
+                                                      std::size_t L, const double* c, std::size_t shapes, double* lanes, Fma fma) {
+  constexpr int C = sizeof(Vec) == sizeof(Quad) ? 4 : 2;  // the block's accumulators within 16 registers
+  for (std::size_t hb = 0; hb < stride; hb += 4) {  // one group of four h at a time: its points stay in the cache
+    std::size_t q = 0;
+    for (; q + 2 <= n; q += 2) {
+      std::size_t m = 0;
+      for (; m + C <= n; m += C) shaped_block<Vec, Mem, Fma, 2, C>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
+      for (; m < n; ++m) shaped_block<Vec, Mem, Fma, 2, 1>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
+    }
+    for (; q < n; ++q)
+      for (std::size_t m = 0; m < n; ++m) shaped_block<Vec, Mem, Fma, 1, 1>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
+  }
+}
+
 }  // namespace
+
+void shaped_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L,
+                              const double* c, std::size_t shapes, double* lanes) {
+  shaped_products_of<Pair, PairMem>(a, b, count, n, stride, L, c, shapes, lanes,
+                                    [](Pair x, Pair y, Pair acc) { return Pair{std::fma(x[0], y[0], acc[0]), std::fma(x[1], y[1], acc[1])}; });
+}
+
+void reduce_lanes(const double* lanes, std::size_t entries, double* out) {
+  for (std::size_t e = 0; e < entries; ++e) out[e] += (lanes[4 * e] + lanes[4 * e + 2]) + (lanes[4 * e + 1] + lanes[4 * e + 3]);
+}
 
 void row_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len,
                            const double* c, std::size_t shapes, double* out) {
@@ -142,13 +233,40 @@ bool avx2_available() {
   static const bool yes = __builtin_cpu_supports("avx2");
   return yes;
 }
+namespace {
+struct FmaAvx2 {
+  __attribute__((target("avx2,fma"))) Quad operator()(Quad x, Quad y, Quad acc) const { return _mm256_fmadd_pd(x, y, acc); }
+};
+}  // namespace
+__attribute__((target("avx2,fma"))) void shaped_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n,
+                                                              std::size_t stride, std::size_t L, const double* c, std::size_t shapes,
+                                                              double* lanes) {
+  shaped_products_of<Quad, QuadMem>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx2{});
+}
+bool avx2_fma_available() {
+  static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+  return yes;
+}
 #else
+void shaped_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                          std::size_t shapes, double* lanes) {
+  shaped_products_baseline(a, b, count, n, stride, L, c, shapes, lanes);
+}
+bool avx2_fma_available() { return false; }
 void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
                        std::size_t shapes, double* out) {
   row_products_baseline(a, b, count, n, first, len, c, shapes, out);
 }
 bool avx2_available() { return false; }
 #endif
+
+void shaped_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                     std::size_t shapes, double* lanes) {
+  if (avx2_fma_available())
+    shaped_products_avx2(a, b, count, n, stride, L, c, shapes, lanes);
+  else
+    shaped_products_baseline(a, b, count, n, stride, L, c, shapes, lanes);
+}
 
 void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
                   std::size_t shapes, double* out) {

@@ -4,8 +4,8 @@
 // pair tables run ~10⁹ points through these. They are built for AVX2 and AVX-512 as well as the x86-64 baseline and
 // chosen at run time, and every version gives the same numbers: the elementwise loops round each IEEE +, ×, ÷, √ once
 // as written (no FMA contraction in this file, CMakeLists.txt), and each product entry sums its points in one fixed order
-// whatever the vector width (four partial sums, row_products). tests/theory/test_point_kernels.cpp
-// checks every kernel against a plain scalar loop bit for bit.
+// whatever the vector width (four partial sums, row_products; four lanes of written-out fused multiply-adds,
+// shaped_products). tests/theory/test_point_kernels.cpp checks every kernel against a plain scalar loop bit for bit.
 #include <cstddef>
 
 namespace granmix::theory {
@@ -14,6 +14,9 @@ namespace granmix::theory {
 void laguerre_rows(const double* x, std::size_t count, std::size_t modes, double* L);
 // B[m·count + p] *= (x_p + x₀)^(−1/2) for first ≤ m < rows (collision_weighted_basis's weight).
 void weight_rows(const double* x, std::size_t count, double x0, std::size_t first, std::size_t rows, double* B);
+// Both at once for rows 0 … modes − 1: B[m·count + p] = L_m^(3/2)(x_p)·(x_p + x₀)^(−1/2), the same numbers as
+// laguerre_rows then weight_rows, in one pass over the points (chunks of 32) instead of two over every row.
+void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B);
 // The loss rows: loss[m·count + p] = B[m·count + p]·wx_p − B1[m·count + p]·wcc_p, m < n.
 void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count, double* loss);
 // The product a·bᵀ over the points first … first + len − 1, weighted for each of `shapes` shapes s by c[s]:
@@ -22,6 +25,24 @@ void loss_rows(const double* B, const double* B1, const double* wx, const double
 // operations in the same order in every build.
 void row_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
                   std::size_t shapes, double* out);
+
+// The products of the partner-shaped pair integrals, whose shape factors depend on the point's W (h) alone. The points
+// are laid out with h fastest, p = l·stride + h (stride a multiple of 4, the rows `count` long), and each lane e keeps
+// the h ≡ e (mod 4):
+//   t(h) = Σ_{l<L} a[q·count + l·stride + h]·b[m·count + l·stride + h], by fused multiply-adds in order of l from 0;
+//   lanes[((s·n + q)·n + m)·4 + h mod 4] ← fma(c[s·stride + h], t(h), that lane), for h = 0, 1, … in order
+// for q, m < n and s < shapes. reduce_lanes then adds each entry's four lanes into out as (s₀ + s₂) + (s₁ + s₃).
+// Unlike row_products over one h at a time, no entry is reduced across its lanes before the end: v1 Fig. 8's pair
+// tables (12–36 points per h) spent most of row_products there. Every build does the same operations in the same order
+// (the baseline's fused multiply-adds by std::fma, correctly rounded on any processor).
+void shaped_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                     std::size_t shapes, double* lanes);
+void reduce_lanes(const double* lanes, std::size_t entries, double* out);
+void shaped_products_baseline(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L,
+                              const double* c, std::size_t shapes, double* lanes);
+void shaped_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                          std::size_t shapes, double* lanes);  // AVX2 with FMA (avx2_fma_available)
+bool avx2_fma_available();
 
 // The two builds of row_products, for tests: the baseline's (SSE2, two doubles per vector) and the AVX2 one (four),
 // which row_products takes where the processor has AVX2 (avx2_available).

@@ -77,6 +77,7 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
   return {size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
             for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
             double* L = B + count;  // rows 1…: L_{m−1}, then weighted by r = (x + x₀)^(−1/2)
+            if (!xdB) return weighted_laguerre_rows(x, count, x0, size - 1, L);  // the pair integrals' case: one pass
             laguerre_rows(x, count, size - 1, L);
             if (xdB) {
               thread_local std::vector<double> h;  // reused: a fresh one costs page faults at every call
@@ -108,28 +109,40 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     shaped = shaped || shapes[j].a2 != 0.0 || shapes[j].a3 != 0.0 || shapes[j].one != 1.0 || shapes[j].full != nullptr;
   // Given the impact speed, the (W, |v_⊥|²) grid's points are evaluated together and summed into A by one product,
   // A += B·Lᵀ with the loss columns L_p = w_p [c_p² B(c_p²) − c_p·c_p′ B(c_p′²)], i.e. Σ_p B_q · c·[c B_m(c²) − c′ B_m(c′²)].
-  const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), P = H * L;
-  thread_local std::vector<double> B, B1, loss, sums, weights;  // reused across calls (fresh ones cost page faults)
-  thread_local Eigen::VectorXd x, x1, wx, wcc, y;
+  // A partner's shape factor depends on W alone (c_iz), so with shapes the points are laid out W fastest (p = l·Hs + h,
+  // Hs = H rounded up to 4; the extra points weigh 0) and shaped_products weights each W's sums by every shape at once.
+  const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), Hs = shaped ? (H + 3) / 4 * 4 : H, P = Hs * L;
+  thread_local std::vector<double> B, B1, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh;  // reused (fresh ones cost page faults)
+  thread_local Eigen::VectorXd y;
   for (std::vector<double>* m : {&B, &B1, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
-  for (Eigen::VectorXd* v : {&x, &x1, &wx, &wcc}) v->resize(Eigen::Index(P));
+  for (std::vector<double>* v : {&x, &x1, &wx, &wcc}) v->resize(P);
+  for (std::vector<double>* v : {&zk, &zk1, &wh}) v->resize(Hs);
   y.resize(Eigen::Index(H));
   sums.assign(count * N * N, 0.0);  // every shape's products, row by row (point_kernels.hpp)
-  weights.assign(count, 1.0);       // each shape's factor at the current W (1: a Maxwellian partner)
+  weights.assign(count, 1.0);       // a Maxwellian partner's factor
+  if (shaped) lanes.assign(count * N * N * 4, 0.0), shape_w.assign(count * Hs, 0.0);
   // The f_w-tracer and f_i pair given the impact speed u (sonine_quadrature.hpp), the partner's shape as
   // E[f_i/f_M,i | v_iz] (its perpendicular components do not reach the tracer's v′).
   for (std::size_t n = 0; n < speed.x.size(); ++n) {
     const double u = std::sqrt(2.0 * V) * speed.x[n], bu = mu * (1.0 + rates.law().eps_at(k, i, u)) * u;
     const double wn = flux * speed.weight[n];
-    Eigen::Index p = 0;
-    for (std::size_t h = 0; h < H; ++h) {
-      const double W = sW * g.hermite.x[h], zk = W + alpha * u, zk1 = zk - bu;  // v_kz before and after
-      y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
-      for (std::size_t l = 0; l < L; ++l, ++p) {
-        const double w = wn * g.hermite.weight[h] * g.laguerre.weight[l], r = lam * g.laguerre.x[l];  // |v_k⊥|²/(2θ_k)
-        x[p] = r + zk * zk * inv2k, x1[p] = r + zk1 * zk1 * inv2k;  // c², c′²
-        wx[p] = w * x[p], wcc[p] = w * (r + zk * zk1 * inv2k);  // w c², w c·c′
-      }
+    for (std::size_t h = 0; h < Hs; ++h) {  // v_kz before and after, the W weights (padding: any finite point of weight 0)
+      const double W = h < H ? sW * g.hermite.x[h] : 0.0;
+      zk[h] = W + alpha * u, zk1[h] = zk[h] - bu, wh[h] = h < H ? wn * g.hermite.weight[h] : 0.0;
+      if (h < H) y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
+    }
+    // Point p = l·Hs + h with shapes (W fastest, each l's points contiguous), h·L + l without.
+    const auto point = [&](std::size_t p, std::size_t h, double r, double wl) {
+      const double w = wh[h] * wl;
+      x[p] = r + zk[h] * zk[h] * inv2k, x1[p] = r + zk1[h] * zk1[h] * inv2k;  // c², c′²
+      wx[p] = w * x[p], wcc[p] = w * (r + zk[h] * zk1[h] * inv2k);        // w c², w c·c′
+    };
+    for (std::size_t l = 0; l < L; ++l) {
+      const double r = lam * g.laguerre.x[l], wl = g.laguerre.weight[l];  // |v_k⊥|²/(2θ_k)
+      if (shaped)
+        for (std::size_t h = 0; h < Hs; ++h) point(l * Hs + h, h, r, wl);
+      else
+        for (std::size_t h = 0; h < H; ++h) point(h * L + l, h, r, wl);
     }
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
@@ -137,15 +150,14 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       row_products(B.data(), loss.data(), P, N, 0, P, weights.data(), count, sums.data());
       continue;
     }
-    // The shape factor depends on W alone (c_iz), so the sum over |v_⊥|² is done once per W — one product's work for
-    // every shape together — and each shape weights those partial sums.
     for (std::size_t h = 0; h < H; ++h) {
       const double S2 = sonine_axial_S2(y[Eigen::Index(h)]), S3 = sonine_axial_S3(y[Eigen::Index(h)]);
       for (std::size_t j = 0; j < count; ++j)
-        weights[j] = shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3;
-      row_products(B.data(), loss.data(), P, N, h * L, L, weights.data(), count, sums.data());
+        shape_w[j * Hs + h] = shapes[j].full ? shapes[j].full->at(y[Eigen::Index(h)]) : shapes[j].one + shapes[j].a2 * S2 + shapes[j].a3 * S3;
     }
+    shaped_products(B.data(), loss.data(), P, N, Hs, L, shape_w.data(), count, lanes.data());
   }
+  if (shaped) reduce_lanes(lanes.data(), count * N * N, sums.data());
   for (std::size_t j = 0; j < count; ++j)
     for (std::size_t q = 0; q < N; ++q)
       for (std::size_t m = 0; m < N; ++m) out[j](Eigen::Index(q), Eigen::Index(m)) += sums[(j * N + q) * N + m];

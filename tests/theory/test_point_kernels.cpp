@@ -59,6 +59,13 @@ TEST_CASE("point kernels: the elementwise loops equal plain scalar loops bit for
       }
       CHECK(same_bits(L, ref));
     }
+    for (std::size_t modes : {1u, 2u, 7u, 15u}) {  // weighted_laguerre_rows: laguerre_rows then weight_rows, one pass
+      std::vector<double> W(modes * count), ref(modes * count);
+      weighted_laguerre_rows(x.data(), count, 0.37, modes, W.data());
+      laguerre_rows(x.data(), count, modes, ref.data());
+      weight_rows(x.data(), count, 0.37, 0, modes, ref.data());
+      CHECK(same_bits(W, ref));
+    }
     const std::size_t rows = 8;
     std::vector<double> B = uniform(rows * count, -3.0, 3.0, 21 + count), ref = B;
     weight_rows(x.data(), count, 0.37, 1, rows, B.data());
@@ -93,4 +100,50 @@ TEST_CASE("point kernels: row_products sums in its documented order in every bui
           CHECK(same_bits(wide, ref));
         }
       }
+}
+
+namespace {
+
+// shaped_products' documented sums (point_kernels.hpp): per h, t = Σ_l a·b by fused multiply-adds in order of l, then
+// lane h mod 4 of entry (s, q, m) ← fma(c[s·stride + h], t, lane), h in order.
+std::vector<double> shaped_by_hand(const std::vector<double>& a, const std::vector<double>& b, std::size_t count, std::size_t n,
+                                   std::size_t stride, std::size_t L, const std::vector<double>& c, std::size_t shapes, std::vector<double> lanes) {
+  for (std::size_t s = 0; s < shapes; ++s)
+    for (std::size_t q = 0; q < n; ++q)
+      for (std::size_t m = 0; m < n; ++m)
+        for (std::size_t h = 0; h < stride; ++h) {
+          double t = 0.0;
+          for (std::size_t l = 0; l < L; ++l) t = std::fma(a[q * count + l * stride + h], b[m * count + l * stride + h], t);
+          double& lane = lanes[((s * n + q) * n + m) * 4 + h % 4];
+          lane = std::fma(c[s * stride + h], t, lane);
+        }
+  return lanes;
+}
+
+}  // namespace
+
+TEST_CASE("point kernels: shaped_products sums in its documented order in every build", "[theory]") {
+  // The pair tables' rules (H × L): 20 × 12, 40 × 24, 32 × 16 (30 rounded up to 4), 60 × 36; rows of 8 and odd sizes.
+  for (auto [stride, L] : {std::pair<std::size_t, std::size_t>{20, 12}, {40, 24}, {32, 16}, {60, 36}, {4, 1}})
+    for (std::size_t n : {1u, 3u, 8u, 10u})
+      for (std::size_t shapes : {1u, 3u}) {
+        const std::size_t count = stride * L;
+        const std::vector<double> a = uniform(n * count, -2.0, 2.0, unsigned(5 + stride)), b = uniform(n * count, -2.0, 2.0, unsigned(6 + L));
+        const std::vector<double> c = uniform(shapes * stride, -1.5, 1.5, unsigned(7 + n));
+        const std::vector<double> start = uniform(shapes * n * n * 4, -1.0, 1.0, unsigned(9 + n));  // the lanes accumulate
+        const std::vector<double> ref = shaped_by_hand(a, b, count, n, stride, L, c, shapes, start);
+        std::vector<double> base = start, wide = start;
+        shaped_products_baseline(a.data(), b.data(), count, n, stride, L, c.data(), shapes, base.data());
+        INFO("n " << n << ", rule " << stride << " x " << L << ", shapes " << shapes);
+        CHECK(same_bits(base, ref));
+        if (avx2_fma_available()) {
+          shaped_products_avx2(a.data(), b.data(), count, n, stride, L, c.data(), shapes, wide.data());
+          CHECK(same_bits(wide, ref));
+        }
+      }
+  // reduce_lanes: (s₀ + s₂) + (s₁ + s₃) added to each entry.
+  const std::vector<double> lanes = uniform(12, -1.0, 1.0, 3);
+  std::vector<double> out = {0.5, -0.25, 2.0};
+  reduce_lanes(lanes.data(), 3, out.data());
+  for (std::size_t e = 0; e < 3; ++e) CHECK(out[e] == [&] { const double x = (lanes[4 * e] + lanes[4 * e + 2]) + (lanes[4 * e + 1] + lanes[4 * e + 3]); return (e == 0 ? 0.5 : e == 1 ? -0.25 : 2.0) + x; }());
 }
