@@ -67,6 +67,17 @@ using PairMem = double __attribute__((vector_size(16), aligned(8), may_alias));
 using Quad = double __attribute__((vector_size(32)));
 using QuadMem = double __attribute__((vector_size(32), aligned(8), may_alias));
 
+// The K vectors of four points at offset `off` of R rows of a and C rows of b, W doubles per vector (unaligned loads).
+template <class Vec, class Mem, int R, int C, int K>
+[[gnu::always_inline]] inline void load_points(const double* const (&ra)[R], const double* const (&rb)[C], std::size_t off, Vec (&x)[R][K],
+                                               Vec (&y)[C][K]) {
+  constexpr int W = 4 / K;
+  for (int k = 0; k < K; ++k) {
+    for (int i = 0; i < R; ++i) x[i][k] = *reinterpret_cast<const Mem*>(ra[i] + off + std::size_t(k * W));
+    for (int j = 0; j < C; ++j) y[j][k] = *reinterpret_cast<const Mem*>(rb[j] + off + std::size_t(k * W));
+  }
+}
+
 // The R × C block of entries from row q of a and row m of b. Each entry keeps four partial sums, point l in lane
 // (l − first) mod 4 — one Quad, or two Pairs: the same operations in the same order for either width.
 template <class Vec, class Mem, int Sh, int R, int C>
@@ -85,10 +96,7 @@ template <class Vec, class Mem, int Sh, int R, int C>
   const std::size_t end = first + len, whole = first + len / 4 * 4;
   for (std::size_t l = first; l < whole; l += 4) {
     Vec x[R][K], y[C][K];
-    for (int k = 0; k < K; ++k) {
-      for (int i = 0; i < R; ++i) x[i][k] = *reinterpret_cast<const Mem*>(ra[i] + l + std::size_t(k * W));
-      for (int j = 0; j < C; ++j) y[j][k] = *reinterpret_cast<const Mem*>(rb[j] + l + std::size_t(k * W));
-    }
+    load_points<Vec, Mem, R, C, K>(ra, rb, l, x, y);
     for (int i = 0; i < R; ++i)
       for (int j = 0; j < C; ++j)
         for (int k = 0; k < K; ++k) sum[i][j][k] += x[i][k] * y[j][k];
@@ -167,10 +175,7 @@ template <class Vec, class Mem, class Fma, int R, int C>
   for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count + hb;
   for (std::size_t l = 0, off = 0; l < L; ++l, off += stride) {
     Vec x[R][K], y[C][K];
-    for (int k = 0; k < K; ++k) {
-      for (int i = 0; i < R; ++i) x[i][k] = *reinterpret_cast<const Mem*>(ra[i] + off + std::size_t(k * W));
-      for (int j = 0; j < C; ++j) y[j][k] = *reinterpret_cast<const Mem*>(rb[j] + off + std::size_t(k * W));
-    }
+    load_points<Vec, Mem, R, C, K>(ra, rb, off, x, y);
     for (int i = 0; i < R; ++i)
       for (int j = 0; j < C; ++j)
         for (int k = 0; k < K; ++k) t[i][j][k] = fma(x[i][k], y[j][k], t[i][j][k]);
