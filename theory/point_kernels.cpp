@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #if defined(__x86_64__)
@@ -32,25 +33,35 @@ GRANMIX_VECTOR_CLONES void weight_rows(const double* x, std::size_t count, doubl
     for (std::size_t p = 0; p < count; ++p) B[m * count + p] *= r[p];
 }
 
-GRANMIX_VECTOR_CLONES void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B) {
-  constexpr std::size_t chunk = 32;  // the points of one pass: their recurrence and weights stay in registers and L1
-  for (std::size_t p0 = 0; p0 < count; p0 += chunk) {
-    const std::size_t n = std::min(chunk, count - p0);
-    const double* xs = x + p0;
-    double r[chunk], prev[chunk], cur[chunk];
-    for (std::size_t j = 0; j < n; ++j) r[j] = 1.0 / std::sqrt(xs[j] + x0);
-    for (std::size_t j = 0; j < n; ++j) prev[j] = 1.0, B[p0 + j] = 1.0 * r[j];
-    if (modes > 1)
-      for (std::size_t j = 0; j < n; ++j) cur[j] = 2.5 - xs[j], B[count + p0 + j] = cur[j] * r[j];
-    for (std::size_t m = 1; m + 1 < modes; ++m) {
-      const double a = 2.0 * double(m) + 2.5, b = double(m) + 1.5, inv = 1.0 / double(m + 1);
-      double* row = B + (m + 1) * count + p0;
-      for (std::size_t j = 0; j < n; ++j) {
-        const double next = ((a - xs[j]) * cur[j] - b * prev[j]) * inv;
-        prev[j] = cur[j], cur[j] = next, row[j] = next * r[j];
-      }
+namespace {
+
+// One chunk of weighted_laguerre_rows: n points from x, their rows at stride `count`. Inlined twice, with n the full
+// chunk's compile-time 32 (the loops unrolled into whole vectors) and with the last chunk's run-time n.
+template <class Count>
+[[gnu::always_inline]] inline void weighted_laguerre_chunk(const double* xs, Count n, std::size_t count, double x0, std::size_t modes, double* B) {
+  constexpr std::size_t chunk = 32;
+  double r[chunk], prev[chunk], cur[chunk];
+  for (std::size_t j = 0; j < n; ++j) r[j] = 1.0 / std::sqrt(xs[j] + x0);
+  for (std::size_t j = 0; j < n; ++j) prev[j] = 1.0, B[j] = 1.0 * r[j];
+  if (modes > 1)
+    for (std::size_t j = 0; j < n; ++j) cur[j] = 2.5 - xs[j], B[count + j] = cur[j] * r[j];
+  for (std::size_t m = 1; m + 1 < modes; ++m) {
+    const double a = 2.0 * double(m) + 2.5, b = double(m) + 1.5, inv = 1.0 / double(m + 1);
+    double* row = B + (m + 1) * count;
+    for (std::size_t j = 0; j < n; ++j) {
+      const double next = ((a - xs[j]) * cur[j] - b * prev[j]) * inv;
+      prev[j] = cur[j], cur[j] = next, row[j] = next * r[j];
     }
   }
+}
+
+}  // namespace
+
+GRANMIX_VECTOR_CLONES void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B) {
+  constexpr std::size_t chunk = 32;  // the points of one pass: their recurrence and weights stay in registers and L1
+  std::size_t p0 = 0;
+  for (; p0 + chunk <= count; p0 += chunk) weighted_laguerre_chunk(x + p0, std::integral_constant<std::size_t, chunk>{}, count, x0, modes, B + p0);
+  if (p0 < count) weighted_laguerre_chunk(x + p0, count - p0, count, x0, modes, B + p0);
 }
 
 GRANMIX_VECTOR_CLONES void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count,

@@ -112,11 +112,11 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   // A partner's shape factor depends on W alone (c_iz), so with shapes the points are laid out W fastest (p = l·Hs + h,
   // Hs = H rounded up to 4; the extra points weigh 0) and shaped_products weights each W's sums by every shape at once.
   const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), Hs = shaped ? (H + 3) / 4 * 4 : H, P = Hs * L;
-  thread_local std::vector<double> B, B1, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh;  // reused (fresh ones cost page faults)
+  thread_local std::vector<double> B, B1, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh, qk, qk1, qkk1;  // reused (fresh ones cost page faults)
   thread_local Eigen::VectorXd y;
   for (std::vector<double>* m : {&B, &B1, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
   for (std::vector<double>* v : {&x, &x1, &wx, &wcc}) v->resize(P);
-  for (std::vector<double>* v : {&zk, &zk1, &wh}) v->resize(Hs);
+  for (std::vector<double>* v : {&zk, &zk1, &wh, &qk, &qk1, &qkk1}) v->resize(Hs);
   y.resize(Eigen::Index(H));
   sums.assign(count * N * N, 0.0);  // every shape's products, row by row (point_kernels.hpp)
   weights.assign(count, 1.0);       // a Maxwellian partner's factor
@@ -129,21 +129,23 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
     for (std::size_t h = 0; h < Hs; ++h) {  // v_kz before and after, the W weights (padding: any finite point of weight 0)
       const double W = h < H ? sW * g.hermite.x[h] : 0.0;
       zk[h] = W + alpha * u, zk1[h] = zk[h] - bu, wh[h] = h < H ? wn * g.hermite.weight[h] : 0.0;
+      qk[h] = zk[h] * zk[h] * inv2k, qk1[h] = zk1[h] * zk1[h] * inv2k, qkk1[h] = zk[h] * zk1[h] * inv2k;  // their parts of c², c′², c·c′
       if (h < H) y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
     }
-    // Point p = l·Hs + h with shapes (W fastest, each l's points contiguous), h·L + l without.
-    const auto point = [&](std::size_t p, std::size_t h, double r, double wl) {
-      const double w = wh[h] * wl;
-      x[p] = r + zk[h] * zk[h] * inv2k, x1[p] = r + zk1[h] * zk1[h] * inv2k;  // c², c′²
-      wx[p] = w * x[p], wcc[p] = w * (r + zk[h] * zk1[h] * inv2k);        // w c², w c·c′
+    // Point p = l·Hs + h with shapes (W fastest, each l's points contiguous), h·L + l without: each run of points
+    // written by one contiguous loop (restrict: vectorised).
+    double *__restrict xp = x.data(), *__restrict x1p = x1.data(), *__restrict wxp = wx.data(), *__restrict wccp = wcc.data();
+    const auto point = [&](std::size_t p, double r, double w, double q, double q1, double qq1) {
+      xp[p] = r + q, x1p[p] = r + q1, wxp[p] = w * xp[p], wccp[p] = w * (r + qq1);  // c², c′², w c², w c·c′
     };
-    for (std::size_t l = 0; l < L; ++l) {
-      const double r = lam * g.laguerre.x[l], wl = g.laguerre.weight[l];  // |v_k⊥|²/(2θ_k)
-      if (shaped)
-        for (std::size_t h = 0; h < Hs; ++h) point(l * Hs + h, h, r, wl);
-      else
-        for (std::size_t h = 0; h < H; ++h) point(h * L + l, h, r, wl);
-    }
+    if (shaped)
+      for (std::size_t l = 0; l < L; ++l) {
+        const double r = lam * g.laguerre.x[l], wl = g.laguerre.weight[l];  // |v_k⊥|²/(2θ_k)
+        for (std::size_t h = 0; h < Hs; ++h) point(l * Hs + h, r, wh[h] * wl, qk[h], qk1[h], qkk1[h]);
+      }
+    else
+      for (std::size_t h = 0; h < H; ++h)
+        for (std::size_t l = 0; l < L; ++l) point(h * L + l, lam * g.laguerre.x[l], wh[h] * g.laguerre.weight[l], qk[h], qk1[h], qkk1[h]);
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
     if (!shaped) {  // every shape Maxwellian: one product
