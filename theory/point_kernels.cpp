@@ -205,12 +205,17 @@ template <class Vec, class Mem, class Fma, int R, int C>
   }
 }
 
-template <class Vec, class Mem, class Fma>
+template <class Vec, class Mem, class Fma, int R = 2>
 [[gnu::always_inline]] inline void shaped_products_of(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride,
                                                       std::size_t L, const double* c, std::size_t shapes, double* lanes, Fma fma) {
-  constexpr int C = sizeof(Vec) == sizeof(Quad) ? 4 : 2;  // the block's accumulators within 16 registers
+  constexpr int C = sizeof(Vec) == sizeof(Quad) ? 4 : 2;  // the block's accumulators within 16 registers (R = 2)
   for (std::size_t hb = 0; hb < stride; hb += 4) {  // one group of four h at a time: its points stay in the cache
     std::size_t q = 0;
+    for (; q + R <= n; q += R) {
+      std::size_t m = 0;
+      for (; m + C <= n; m += C) shaped_block<Vec, Mem, Fma, R, C>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
+      for (; m < n; ++m) shaped_block<Vec, Mem, Fma, R, 1>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
+    }
     for (; q + 2 <= n; q += 2) {
       std::size_t m = 0;
       for (; m + C <= n; m += C) shaped_block<Vec, Mem, Fma, 2, C>(a, b, count, n, stride, L, c, shapes, hb, q, m, lanes, fma);
@@ -259,6 +264,20 @@ __attribute__((target("avx2,fma"))) void shaped_products_avx2(const double* a, c
                                                               double* lanes) {
   shaped_products_of<Quad, QuadMem>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx2{});
 }
+namespace {
+struct FmaAvx512 {
+  __attribute__((target("avx2,fma,avx512f,avx512vl"))) Quad operator()(Quad x, Quad y, Quad acc) const { return _mm256_fmadd_pd(x, y, acc); }
+};
+}  // namespace
+__attribute__((target("avx2,fma,avx512f,avx512vl"))) void shaped_products_avx512(const double* a, const double* b, std::size_t count, std::size_t n,
+                                                              std::size_t stride, std::size_t L, const double* c, std::size_t shapes,
+                                                              double* lanes) {
+  shaped_products_of<Quad, QuadMem, FmaAvx512, 4>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx512{});
+}
+bool avx512_available() {
+  static const bool yes = avx2_fma_available() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
+  return yes;
+}
 bool avx2_fma_available() {
   static const bool yes = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
   return yes;
@@ -268,6 +287,11 @@ void shaped_products_avx2(const double* a, const double* b, std::size_t count, s
                           std::size_t shapes, double* lanes) {
   shaped_products_baseline(a, b, count, n, stride, L, c, shapes, lanes);
 }
+void shaped_products_avx512(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                            std::size_t shapes, double* lanes) {
+  shaped_products_baseline(a, b, count, n, stride, L, c, shapes, lanes);
+}
+bool avx512_available() { return false; }
 bool avx2_fma_available() { return false; }
 void row_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t first, std::size_t len, const double* c,
                        std::size_t shapes, double* out) {
@@ -278,7 +302,9 @@ bool avx2_available() { return false; }
 
 void shaped_products(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
                      std::size_t shapes, double* lanes) {
-  if (avx2_fma_available())
+  if (avx512_available())
+    shaped_products_avx512(a, b, count, n, stride, L, c, shapes, lanes);
+  else if (avx2_fma_available())
     shaped_products_avx2(a, b, count, n, stride, L, c, shapes, lanes);
   else
     shaped_products_baseline(a, b, count, n, stride, L, c, shapes, lanes);

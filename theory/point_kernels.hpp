@@ -43,6 +43,12 @@ void shaped_products_baseline(const double* a, const double* b, std::size_t coun
 void shaped_products_avx2(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
                           std::size_t shapes, double* lanes);  // AVX2 with FMA (avx2_fma_available)
 bool avx2_fma_available();
+void shaped_products_avx512(const double* a, const double* b, std::size_t count, std::size_t n, std::size_t stride, std::size_t L, const double* c,
+                            std::size_t shapes, double* lanes);
+// The AVX2 kernel's operations and order, built with AVX-512VL for its 32 vector registers: blocks of 4 × 4 entries
+// (16 sums, 8 loads per 16 fused multiply-adds) instead of 2 × 4 (8 sums, 6 loads per 8). v1 Fig. 8's kinetic level
+// on one thread 1.68 → 1.57 s (alternated, 2026-12-06). shaped_products takes it where avx512_available.
+bool avx512_available();
 
 // The two builds of row_products, for tests: the baseline's (SSE2, two doubles per vector) and the AVX2 one (four),
 // which row_products takes where the processor has AVX2 (avx2_available).

@@ -57,6 +57,38 @@ void x_derivative_row(const double* L, std::size_t count, std::size_t m, const d
   for (std::size_t p = 0; p < count; ++p) out[p] = double(m) * Lm[p] - (double(m) + 1.5) * Lm1[p] + (h ? h[p] * Lm[p] : 0.0);
 }
 
+// A factor along a run of points: one value for all (double), or an array's, times `scale`.
+template <class T>
+struct Along;
+template <>
+struct Along<double> {
+  double v;
+  double operator[](std::size_t) const { return v; }
+};
+template <>
+struct Along<const double*> {
+  const double* __restrict v;
+  double scale = 1.0;
+  double operator[](std::size_t j) const { return scale * v[j]; }  // 1 · v = v exactly
+};
+
+// The pair integrals' per-point columns: c², c′², w c², w c·c′.
+struct PointColumns {
+  double *x, *x1, *wx, *wcc;
+  PointColumns at(std::size_t p) const { return {x + p, x1 + p, wx + p, wcc + p}; }
+};
+
+// n contiguous points: c² = r + q, c′² = r + q₁, w c², w (r + q_c) with w = w_a w_b, the factors given along the run
+// (restrict: the loop vectorises; the same roundings as one point at a time).
+template <class R, class Wa, class Wb, class Q>
+[[gnu::always_inline]] inline void point_run(std::size_t n, PointColumns to, R r, Wa wa, Wb wb, Q q, Q q1, Q qc) {
+  double *__restrict x = to.x, *__restrict x1 = to.x1, *__restrict wx = to.wx, *__restrict wcc = to.wcc;
+  for (std::size_t j = 0; j < n; ++j) {
+    const double rj = r[j], w = wb[j] * wa[j], c2 = rj + q[j];
+    x[j] = c2, x1[j] = rj + q1[j], wx[j] = w * c2, wcc[j] = w * (rj + qc[j]);
+  }
+}
+
 }  // namespace
 
 RadialBasis sonine_radial_basis(std::size_t modes) {
@@ -133,19 +165,16 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       if (h < H) y[Eigen::Index(h)] = (W - (1.0 - alpha) * u) * (W - (1.0 - alpha) * u) * inv2i;  // c_iz²
     }
     // Point p = l·Hs + h with shapes (W fastest, each l's points contiguous), h·L + l without: each run of points
-    // written by one contiguous loop (restrict: vectorised).
-    double *__restrict xp = x.data(), *__restrict x1p = x1.data(), *__restrict wxp = wx.data(), *__restrict wccp = wcc.data();
-    const auto point = [&](std::size_t p, double r, double w, double q, double q1, double qq1) {
-      xp[p] = r + q, x1p[p] = r + q1, wxp[p] = w * xp[p], wccp[p] = w * (r + qq1);  // c², c′², w c², w c·c′
-    };
+    // written by one contiguous loop (point_run: vectorised).
+    const PointColumns to{x.data(), x1.data(), wx.data(), wcc.data()};
     if (shaped)
-      for (std::size_t l = 0; l < L; ++l) {
-        const double r = lam * g.laguerre.x[l], wl = g.laguerre.weight[l];  // |v_k⊥|²/(2θ_k)
-        for (std::size_t h = 0; h < Hs; ++h) point(l * Hs + h, r, wh[h] * wl, qk[h], qk1[h], qkk1[h]);
-      }
+      for (std::size_t l = 0; l < L; ++l)  // r = |v_k⊥|²/(2θ_k) and the weight's factor w_l along the run
+        point_run(Hs, to.at(l * Hs), Along<double>{lam * g.laguerre.x[l]}, Along<double>{g.laguerre.weight[l]}, Along<const double*>{wh.data()},
+                  Along<const double*>{qk.data()}, Along<const double*>{qk1.data()}, Along<const double*>{qkk1.data()});
     else
       for (std::size_t h = 0; h < H; ++h)
-        for (std::size_t l = 0; l < L; ++l) point(h * L + l, lam * g.laguerre.x[l], wh[h] * g.laguerre.weight[l], qk[h], qk1[h], qkk1[h]);
+        point_run(L, to.at(h * L), Along<const double*>{g.laguerre.x.data(), lam}, Along<const double*>{g.laguerre.weight.data()},
+                  Along<double>{wh[h]}, Along<double>{qk[h]}, Along<double>{qk1[h]}, Along<double>{qkk1[h]});
     basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
     loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
     if (!shaped) {  // every shape Maxwellian: one product

@@ -125,7 +125,7 @@ std::vector<double> shaped_by_hand(const std::vector<double>& a, const std::vect
 TEST_CASE("point kernels: shaped_products sums in its documented order in every build", "[theory]") {
   // The pair tables' rules (H × L): 20 × 12, 40 × 24, 32 × 16 (30 rounded up to 4), 60 × 36; rows of 8 and odd sizes.
   for (auto [stride, L] : {std::pair<std::size_t, std::size_t>{20, 12}, {40, 24}, {32, 16}, {60, 36}, {4, 1}})
-    for (std::size_t n : {1u, 3u, 8u, 10u})
+    for (std::size_t n : {1u, 3u, 5u, 8u, 10u})  // the AVX-512 build's blocks of four rows, then two, then one
       for (std::size_t shapes : {1u, 3u}) {
         const std::size_t count = stride * L;
         const std::vector<double> a = uniform(n * count, -2.0, 2.0, unsigned(5 + stride)), b = uniform(n * count, -2.0, 2.0, unsigned(6 + L));
@@ -139,6 +139,11 @@ TEST_CASE("point kernels: shaped_products sums in its documented order in every 
         if (avx2_fma_available()) {
           shaped_products_avx2(a.data(), b.data(), count, n, stride, L, c.data(), shapes, wide.data());
           CHECK(same_bits(wide, ref));
+        }
+        if (avx512_available()) {
+          std::vector<double> widest = start;
+          shaped_products_avx512(a.data(), b.data(), count, n, stride, L, c.data(), shapes, widest.data());
+          CHECK(same_bits(widest, ref));
         }
       }
   // reduce_lanes: (s₀ + s₂) + (s₁ + s₃) added to each entry.
