@@ -44,11 +44,9 @@ const TermTable& moment_table(int order) {
   return table_order(order) == PM ? all : third;
 }
 
-// H(p; source) of one ordered pair from its β polynomials, times β P: the rates of ⟨c^(2p)⟩_k per unit
-// Sonine coefficient; the entries its table does not carry NaN.
-std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, double a, double bP, int order) {
-  std::array<double, PM * NS> H{};
-  moment_table(order).evaluate(polys, a, H.data());
+// H(p; source) of one ordered pair, its table's sums (entry e at sums[e · stride]) times β P: the rates of ⟨c^(2p)⟩_k
+// per unit Sonine coefficient; the entries its table does not carry NaN.
+void scale_moments(const double* sums, std::size_t stride, double bP, int order, std::array<double, PM * NS>& H) {
   static constexpr auto mask = [](int order) {  // the entries a table carries
     std::array<bool, PM * NS> m{};
     for (int e = 0; e < PM * NS; ++e) m[std::size_t(e)] = carried(order, e / NS + 1, e % NS);
@@ -56,8 +54,16 @@ std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, doubl
   };
   static constexpr std::array<bool, PM * NS> all = mask(PM), third = mask(3);
   const std::array<bool, PM * NS>& kept = table_order(order) == PM ? all : third;
-  for (std::size_t e = 0; e < H.size(); ++e) H[e] = kept[e] ? H[e] * bP : std::numeric_limits<double>::quiet_NaN();
-  return H;
+  for (std::size_t e = 0; e < H.size(); ++e) H[e] = kept[e] ? sums[e * stride] * bP : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The table's a = A_k/V and the factor β P = β w √(2π V) of a pair.
+struct PairScale {
+  double a, bP;
+};
+PairScale pair_scale(double weight, double beta, double Ak, double Ai) {
+  const double V = Ak + Ai;
+  return {Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V)};
 }
 
 }  // namespace
@@ -65,8 +71,22 @@ std::array<double, PM * NS> pair_moments(const std::vector<double>& polys, doubl
 std::vector<double> sonine_moment_beta_polynomials(double beta, int order) { return moment_table(order).beta_polynomials(beta); }
 
 std::array<double, PM * NS> sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai, int order) {
-  const double V = Ak + Ai;
-  return pair_moments(polys, Ak / V, beta * weight * std::sqrt(2.0 * std::numbers::pi * V), order);
+  const PairScale p = pair_scale(weight, beta, Ak, Ai);
+  std::array<double, PM * NS> sums{}, H;
+  moment_table(order).evaluate(polys, p.a, sums.data());
+  scale_moments(sums.data(), 1, p.bP, order, H);
+  return H;
+}
+
+void sonine_moment_pairs4_from(const double* polys4, std::size_t groups, const double* weight, const double* beta, const double* Ak,
+                               const double* Ai, int order, SonineMomentRates* out, std::size_t lanes) {
+  double a[4], bP[4], sums[PM * NS * 4] = {};
+  for (int l = 0; l < 4; ++l) {
+    const PairScale p = pair_scale(weight[l], beta[l], Ak[l], Ai[l]);
+    a[l] = p.a, bP[l] = p.bP;
+  }
+  moment_table(order).evaluate4(polys4, groups, a, sums);
+  for (std::size_t l = 0; l < lanes; ++l) scale_moments(sums + l, 4, bP[l], order, out[l]);
 }
 
 std::array<double, PM * NS> sonine_moment_pair(double weight, double mu, double eps, double Ak, double Ai, int order) {
@@ -107,13 +127,21 @@ void SonineMomentCooling::assemble(const double* T) const {
   // Each species' rows on one thread (its sums in the same order for any thread count), summed on the stack and
   // stored once: neighbouring species' sums share cache lines, which two threads adding into them in turn pass back
   // and forth (v1 Fig. 8's kinetic level on 2 threads 2.07 → 1.79 s, alternated, 2026-12-06; the numbers bit for bit).
+  masses_.resize(N_);
+  for (std::size_t i = 0; i < N_; ++i) masses_[i] = mix[i].mass;
   parallel_each(N_, [&](std::size_t k) {
     std::array<double, PM> r0{};
     std::array<double, PM * A> self{};
+    thread_local std::vector<double> weight;
+    thread_local std::vector<SonineMomentRates> row;
+    weight.resize(N_), row.resize(N_);
     for (std::size_t i = 0; i < N_; ++i) {
       const double sigma = mix.sigma(k, i);
-      const std::array<double, PM * NS> H =
-          terms_->moments(k, i, mix[i].density * sigma * sigma * rates_.chi(k, i), mix[k].mass, mix[i].mass, T[k], T[i], order_);
+      weight[i] = mix[i].density * sigma * sigma * rates_.chi(k, i);
+    }
+    terms_->moments_row(k, N_, weight.data(), masses_.data(), T, order_, row.data());
+    for (std::size_t i = 0; i < N_; ++i) {
+      const SonineMomentRates& H = row[i];
       for (int p = 0; p < PM; ++p) {
         r0[std::size_t(p)] += H[std::size_t(p * NS)];
         for (std::size_t j = 0; j < A; ++j) {

@@ -35,6 +35,11 @@ SonineMomentRates sonine_moment_pair(double weight, double mu, double eps, doubl
 // The same from the table's polynomials in β = μ_ik(1 + ε) (constant per pair: callers keep them), of the same order.
 std::vector<double> sonine_moment_beta_polynomials(double beta, int order);
 SonineMomentRates sonine_moment_pair_from(const std::vector<double>& polys, double weight, double beta, double Ak, double Ai, int order);
+// Four pairs at once, lane l from weight[l], beta[l], Ak[l], Ai[l] and the polynomials interleaved, polys4[4·j + l]
+// (`groups` = sonine_moment_beta_polynomials(·, order).size()): out[l] is exactly sonine_moment_pair_from's, for the
+// first `lanes` lanes.
+void sonine_moment_pairs4_from(const double* polys4, std::size_t groups, const double* weight, const double* beta, const double* Ak,
+                               const double* Ai, int order, SonineMomentRates* out, std::size_t lanes = 4);
 
 // From this many species the pair terms of a right-hand side are assembled on OpenMP threads (species by species):
 // ~0.15 µs per pair at constant ε, so 16 species take ~40 µs, well above a fork and join; v1 Fig. 8's 43 species
@@ -69,7 +74,7 @@ class SonineMomentCooling final : public CoolingModel {
   std::shared_ptr<const SoninePairTerms> terms_;
   // At the last temperatures (assemble): per species k and moment p = 1..4 the Maxwell part R0 and the
   // coefficients of the own a₂ … a₄ (self_), per pair (k, i) those of the partner's (partner_).
-  mutable std::vector<double> assembled_T_, R0_, self_, partner_;
+  mutable std::vector<double> assembled_T_, R0_, self_, partner_, masses_;
   mutable bool assembled_ = false;
 };
 

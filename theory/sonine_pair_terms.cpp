@@ -51,6 +51,30 @@ class ClosedFormTerms final : public SoninePairTerms {
     if (cached.beta != beta || cached.modes != std::size_t(order)) cached = {beta, std::size_t(order), 0, sonine_moment_beta_polynomials(beta, order)};
     return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi, order);
   }
+  void moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order, SonineMomentRates* out) const override {
+    // Four partners per vector (sonine_moment_pairs4_from), their β polynomials interleaved and kept per species k
+    // (β and the order fixed within an integration); lanes past the last partner repeat it and are dropped.
+    const std::size_t lanes = (N + 3) / 4 * 4;
+    std::call_once(moment_rows_made_, [&] { moment_rows_.resize(N); });  // rows of distinct k run on threads (concurrent)
+    thread_local std::vector<double> beta, Ak, Ai, w;
+    for (std::vector<double>* v : {&beta, &Ak, &Ai, &w}) v->resize(lanes);
+    for (std::size_t l = 0; l < lanes; ++l) {
+      const std::size_t i = std::min(l, N - 1);
+      beta[l] = m[i] / (m[i] + m[k]) * (1.0 + law_.eps(k, i)), Ak[l] = T[k] / m[k], Ai[l] = T[i] / m[i], w[l] = weight[i];
+    }
+    MomentRow& row = moment_rows_[k];
+    if (row.order != order || row.beta != beta) {
+      row.order = order, row.beta = beta, row.groups = sonine_moment_beta_polynomials(beta[0], order).size();
+      row.polys4.assign(lanes * row.groups, 0.0);
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const std::vector<double> p = sonine_moment_beta_polynomials(beta[l], order);
+        for (std::size_t j = 0; j < row.groups; ++j) row.polys4[(l / 4 * row.groups + j) * 4 + l % 4] = p[j];
+      }
+    }
+    for (std::size_t b = 0; b < N; b += 4)
+      sonine_moment_pairs4_from(row.polys4.data() + b * row.groups, row.groups, &w[b], &beta[b], &Ak[b], &Ai[b], order, out + b,
+                                std::min<std::size_t>(4, N - b));
+  }
 
  private:
   static SonineTracerSums finish(const std::array<SonineCollisionIntegrals, sonine_cpq_sources>& C, double eps, double mk, double mi, double Tk,
@@ -74,6 +98,13 @@ class ClosedFormTerms final : public SoninePairTerms {
   mutable std::vector<BetaPolynomials> polys_;         // per ordered pair (k, i), made on first use
   mutable std::vector<BetaPolynomials> moment_polys_;  // the same for the moment table
   mutable std::once_flag moment_polys_made_;
+  struct MomentRow {  // moments_row's polynomials of species k's pairs, four partners interleaved
+    int order = 0;
+    std::vector<double> beta, polys4;
+    std::size_t groups = 0;
+  };
+  mutable std::vector<MomentRow> moment_rows_;  // per species k, made on first use
+  mutable std::once_flag moment_rows_made_;
 };
 
 class ImpactSpeedTerms final : public SoninePairTerms {
@@ -132,6 +163,10 @@ class ImpactSpeedTerms final : public SoninePairTerms {
 };
 
 }  // namespace
+
+void SoninePairTerms::moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order, SonineMomentRates* out) const {
+  for (std::size_t i = 0; i < N; ++i) out[i] = moments(k, i, weight[i], m[k], m[i], T[k], T[i], order);
+}
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law) {
   if (law.is_viscoelastic()) return std::make_shared<ImpactSpeedTerms>(law);

@@ -1,7 +1,10 @@
 #include "term_table.hpp"
 
 #include <algorithm>
+#include <array>
 #include <stdexcept>
+
+#include "vector_clones.hpp"
 
 namespace granmix::theory {
 
@@ -52,6 +55,26 @@ void TermTable::evaluate(const std::vector<double>& polys, double a, double* out
     double sum = out[r.entry];
     for (; j < end; ++j) sum += poly[j] * apow[a_index[j]];
     out[r.entry] = sum;
+  }
+}
+
+GRANMIX_VECTOR_CLONES void TermTable::evaluate4(const double* polys4, std::size_t groups, const double* a4, double* out4) const {
+  using Lanes = double __attribute__((vector_size(32)));
+  using LanesMem = double __attribute__((vector_size(32), aligned(8), may_alias));
+  const Lanes a = *reinterpret_cast<const LanesMem*>(a4);
+  std::array<Lanes, a_lowest + a_highest + 1> apow{};  // as evaluate's, lane by lane
+  apow[a_lowest] = Lanes{1.0, 1.0, 1.0, 1.0};
+  for (std::size_t j = a_lowest + 1; j < apow.size(); ++j) apow[j] = apow[j - 1] * a;
+  for (std::size_t j = a_lowest; j-- > 0;) apow[j] = apow[j + 1] / a;
+  const unsigned char* a_index = a_index_.data();
+  std::size_t j = 0;
+  for (const Run& r : runs_) {
+    if (j == groups) break;
+    const std::size_t end = std::min(r.end, groups);
+    LanesMem& to = *reinterpret_cast<LanesMem*>(out4 + 4 * std::size_t(r.entry));
+    Lanes sum = to;
+    for (; j < end; ++j) sum += *reinterpret_cast<const LanesMem*>(polys4 + 4 * j) * apow[a_index[j]];
+    to = sum;
   }
 }
 

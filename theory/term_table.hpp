@@ -27,6 +27,10 @@ class TermTable {
   std::size_t groups_below(unsigned entry_limit) const;
   // out[entry] += poly_j · a^ia_j over the given polynomials (a prefix of the groups).
   void evaluate(const std::vector<double>& polys, double a, double* out) const;
+  // The same for four pairs at once, lane l of each: polys4[4·j + l] is pair l's polynomial j (the first `groups`),
+  // a4[l] its a, out4[4·entry + l] its sums. Each lane's operations and order are evaluate's, so its numbers are
+  // exactly evaluate's for that pair (term_table.cpp is built without FMA contraction).
+  void evaluate4(const double* polys4, std::size_t groups, const double* a4, double* out4) const;
 
  private:
   struct Group {

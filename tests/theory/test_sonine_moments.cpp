@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -21,6 +22,7 @@
 #include "theory/sonine_hcs.hpp"
 #include "theory/sonine_moment_cooling.hpp"
 #include "theory/sonine_moment_table.hpp"
+#include "theory/sonine_pair_terms.hpp"
 #include "theory/sonine_second_order.hpp"
 #include "theory/temperature_history.hpp"
 #include "gauss_rules.hpp"
@@ -239,6 +241,51 @@ TEST_CASE("Sonine HCS at order 4: MG binaries against scripts/mg_gamma_sonine_or
     CHECK(z[2 + k] == Approx(four.a3[k]).margin(1e-6));
     CHECK(z[4 + k] == Approx(four.a4[k]).margin(1e-6));
   }
+}
+
+TEST_CASE("Sonine moments: four pairs per vector give each pair's closed forms bit for bit, and a species' row its pairs'", "[theory]") {
+  // SonineMomentCooling assembles a species' pair terms four partners at a time (sonine_moment_pairs4_from, through
+  // SoninePairTerms::moments_row); each lane must be the one-pair evaluation's number exactly, at every order, for any
+  // count of live lanes, so that the closure's results do not depend on how the partners were grouped.
+  std::mt19937_64 rng(44);
+  std::uniform_real_distribution<double> u(0, 1);
+  for (int order : {2, 3, 4}) {
+    const std::size_t groups = sonine_moment_beta_polynomials(0.5, order).size();
+    for (int trial = 0; trial < 10; ++trial) {
+      double w[4], beta[4], Ak[4], Ai[4];
+      std::vector<double> polys4(4 * groups);
+      for (std::size_t l = 0; l < 4; ++l) {
+        w[l] = 0.1 + u(rng), beta[l] = (0.02 + 0.96 * u(rng)) * (1.0 + u(rng)), Ak[l] = std::pow(10.0, 2 * u(rng) - 1), Ai[l] = std::pow(10.0, 2 * u(rng) - 1);
+        const std::vector<double> p = sonine_moment_beta_polynomials(beta[l], order);
+        for (std::size_t j = 0; j < groups; ++j) polys4[4 * j + l] = p[j];
+      }
+      const std::size_t lanes = std::size_t(trial % 4) + 1;
+      std::array<SonineMomentRates, 4> four{};
+      sonine_moment_pairs4_from(polys4.data(), groups, w, beta, Ak, Ai, order, four.data(), lanes);
+      for (std::size_t l = 0; l < lanes; ++l) {
+        const SonineMomentRates one = sonine_moment_pair_from(sonine_moment_beta_polynomials(beta[l], order), w[l], beta[l], Ak[l], Ai[l], order);
+        INFO("order " << order << ", lane " << l);
+        CHECK(std::memcmp(one.data(), four[l].data(), sizeof(one)) == 0);  // bitwise (NaN entries included)
+      }
+    }
+  }
+  // A species' row, 7 partners (a block of four and one of three): each its pair's moments().
+  const model::Mixture mix = test::power_law(7);
+  const std::size_t N = mix.size();
+  const model::Restitution law = model::Restitution::constant(N, 0.7);
+  const std::shared_ptr<const SoninePairTerms> terms = make_sonine_pair_terms(law);
+  std::vector<double> m(N), T(N), weight(N);
+  for (std::size_t i = 0; i < N; ++i) m[i] = mix[i].mass, T[i] = 1.0 + 0.3 * double(i), weight[i] = 0.2 + 0.1 * double(i);
+  for (int order : {3, 4})
+    for (std::size_t k : {std::size_t(0), N - 1}) {
+      std::vector<SonineMomentRates> row(N);
+      terms->moments_row(k, N, weight.data(), m.data(), T.data(), order, row.data());
+      for (std::size_t i = 0; i < N; ++i) {
+        const SonineMomentRates one = terms->moments(k, i, weight[i], m[k], m[i], T[k], T[i], order);
+        INFO("order " << order << ", k " << k << ", i " << i);
+        CHECK(std::memcmp(one.data(), row[i].data(), sizeof(one)) == 0);
+      }
+    }
 }
 
 TEST_CASE("Sonine moments: 43 species' rates the same on one thread and on two (pair terms assembled in parallel)", "[theory]") {
