@@ -35,33 +35,61 @@ GRANMIX_VECTOR_CLONES void weight_rows(const double* x, std::size_t count, doubl
 
 namespace {
 
-// One chunk of weighted_laguerre_rows: n points from x, their rows at stride `count`. Inlined twice, with n the full
-// chunk's compile-time 32 (the loops unrolled into whole vectors) and with the last chunk's run-time n.
-template <class Count>
-[[gnu::always_inline]] inline void weighted_laguerre_chunk(const double* xs, Count n, std::size_t count, double x0, std::size_t modes, double* B) {
+// Where weighted_laguerre_chunk's rows go: stored (Store), or taken at once into the loss rows (Loss).
+struct Store {
+  double* B;
+  [[gnu::always_inline]] void operator()(std::size_t at, double v) const { B[at] = v; }
+};
+struct Loss {
+  const double *B, *wx, *wcc;  // wx, wcc from the chunk's first point
+  double* loss;
+  [[gnu::always_inline]] void operator()(std::size_t at, std::size_t j, double v) const { loss[at] = B[at] * wx[j] - v * wcc[j]; }
+};
+
+// One chunk of weighted_laguerre_rows: n points from x, row m's value of point j handed to the sink at m·count + j
+// (pointers from the chunk's first point). Inlined with n the full chunk's compile-time 32 (the loops unrolled into
+// whole vectors) and with the last chunk's run-time n.
+template <class Count, class Sink>
+[[gnu::always_inline]] inline void weighted_laguerre_chunk(const double* xs, Count n, std::size_t count, double x0, std::size_t modes, Sink sink) {
   constexpr std::size_t chunk = 32;
   double r[chunk], prev[chunk], cur[chunk];
   for (std::size_t j = 0; j < n; ++j) r[j] = 1.0 / std::sqrt(xs[j] + x0);
-  for (std::size_t j = 0; j < n; ++j) prev[j] = 1.0, B[j] = 1.0 * r[j];
+  for (std::size_t j = 0; j < n; ++j) prev[j] = 1.0, sink(j, j, 1.0 * r[j]);
   if (modes > 1)
-    for (std::size_t j = 0; j < n; ++j) cur[j] = 2.5 - xs[j], B[count + j] = cur[j] * r[j];
+    for (std::size_t j = 0; j < n; ++j) cur[j] = 2.5 - xs[j], sink(count + j, j, cur[j] * r[j]);
   for (std::size_t m = 1; m + 1 < modes; ++m) {
     const double a = 2.0 * double(m) + 2.5, b = double(m) + 1.5, inv = 1.0 / double(m + 1);
-    double* row = B + (m + 1) * count;
+    const std::size_t row = (m + 1) * count;
     for (std::size_t j = 0; j < n; ++j) {
       const double next = ((a - xs[j]) * cur[j] - b * prev[j]) * inv;
-      prev[j] = cur[j], cur[j] = next, row[j] = next * r[j];
+      prev[j] = cur[j], cur[j] = next, sink(row + j, j, next * r[j]);
     }
   }
+}
+
+// weighted_laguerre_chunk over all points in chunks of 32 (their recurrence and weights stay in registers and L1).
+template <class MakeSink>
+[[gnu::always_inline]] inline void weighted_laguerre_chunks(const double* x, std::size_t count, double x0, std::size_t modes, MakeSink make) {
+  constexpr std::size_t chunk = 32;
+  std::size_t p0 = 0;
+  for (; p0 + chunk <= count; p0 += chunk) weighted_laguerre_chunk(x + p0, std::integral_constant<std::size_t, chunk>{}, count, x0, modes, make(p0));
+  if (p0 < count) weighted_laguerre_chunk(x + p0, count - p0, count, x0, modes, make(p0));
 }
 
 }  // namespace
 
 GRANMIX_VECTOR_CLONES void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B) {
-  constexpr std::size_t chunk = 32;  // the points of one pass: their recurrence and weights stay in registers and L1
-  std::size_t p0 = 0;
-  for (; p0 + chunk <= count; p0 += chunk) weighted_laguerre_chunk(x + p0, std::integral_constant<std::size_t, chunk>{}, count, x0, modes, B + p0);
-  if (p0 < count) weighted_laguerre_chunk(x + p0, count - p0, count, x0, modes, B + p0);
+  weighted_laguerre_chunks(x, count, x0, modes, [B](std::size_t p0) {
+    return [to = Store{B + p0}](std::size_t at, std::size_t, double v) { to(at, v); };
+  });
+}
+
+GRANMIX_VECTOR_CLONES void collision_weighted_loss_rows(const double* x1, std::size_t count, double x0, std::size_t size, const double* B,
+                                                        const double* wx, const double* wcc, double* loss) {
+  for (std::size_t p = 0; p < count; ++p) loss[p] = B[p] * wx[p] - 1.0 * wcc[p];  // row 0, the constant 1
+  weighted_laguerre_chunks(x1, count, x0, size - 1, [=](std::size_t p0) {
+    return Loss{B + count + p0, wx + p0, wcc + p0, loss + count + p0};
+  });
 }
 
 GRANMIX_VECTOR_CLONES void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count,

@@ -17,6 +17,12 @@ void weight_rows(const double* x, std::size_t count, double x0, std::size_t firs
 // Both at once for rows 0 … modes − 1: B[m·count + p] = L_m^(3/2)(x_p)·(x_p + x₀)^(−1/2), the same numbers as
 // laguerre_rows then weight_rows, in one pass over the points (chunks of 32) instead of two over every row.
 void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B);
+// The collision-weighted basis's loss rows (collision_weighted_basis: 1, then L_{m−1}(x)(x + x₀)^(−1/2)) at the
+// post-collision points x1, never storing the basis there: loss[m·count + p] = B[m·count + p]·wx_p − b_m(x1_p)·wcc_p,
+// m < size, b_m(x1_p) as weighted_laguerre_rows computes it: the same numbers as weighted_laguerre_rows then
+// loss_rows, without writing b(x1) and reading it back (v1 Fig. 8: loss_rows was 11% of its kinetic level's time).
+void collision_weighted_loss_rows(const double* x1, std::size_t count, double x0, std::size_t size, const double* B, const double* wx,
+                                  const double* wcc, double* loss);
 // The loss rows: loss[m·count + p] = B[m·count + p]·wx_p − B1[m·count + p]·wcc_p, m < n.
 void loss_rows(const double* B, const double* B1, const double* wx, const double* wcc, std::size_t n, std::size_t count, double* loss);
 // The product a·bᵀ over the points first … first + len − 1, weighted for each of `shapes` shapes s by c[s]:

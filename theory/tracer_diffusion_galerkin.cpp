@@ -83,6 +83,7 @@ struct PointColumns {
 template <class R, class Wa, class Wb, class Q>
 [[gnu::always_inline]] inline void point_run(std::size_t n, PointColumns to, R r, Wa wa, Wb wb, Q q, Q q1, Q qc) {
   double *__restrict x = to.x, *__restrict x1 = to.x1, *__restrict wx = to.wx, *__restrict wcc = to.wcc;
+#pragma GCC ivdep  // the factors' arrays are not the columns
   for (std::size_t j = 0; j < n; ++j) {
     const double rj = r[j], w = wb[j] * wa[j], c2 = rj + q[j];
     x[j] = c2, x1[j] = rj + q1[j], wx[j] = w * c2, wcc[j] = w * (rj + qc[j]);
@@ -93,11 +94,18 @@ template <class R, class Wa, class Wb, class Q>
 
 RadialBasis sonine_radial_basis(std::size_t modes) {
   if (modes < 1 || modes > max_basis) throw std::invalid_argument("sonine_radial_basis: 1 to 16 functions");
-  return {modes, [modes](const double* x, std::size_t count, double* B, double* xdB) {
-            laguerre_rows(x, count, modes, B);
-            if (xdB)
-              for (std::size_t m = 0; m < modes; ++m) x_derivative_row(B, count, m, nullptr, xdB + m * count);
-          }};
+  RadialBasis b{modes, [modes](const double* x, std::size_t count, double* B, double* xdB) {
+                  laguerre_rows(x, count, modes, B);
+                  if (xdB)
+                    for (std::size_t m = 0; m < modes; ++m) x_derivative_row(B, count, m, nullptr, xdB + m * count);
+                }};
+  b.loss = [modes](const double* x1, std::size_t count, const double* B, const double* wx, const double* wcc, double* loss) {
+    thread_local std::vector<double> B1;  // reused: a fresh one costs page faults at every call
+    B1.resize(modes * count);
+    laguerre_rows(x1, count, modes, B1.data());
+    loss_rows(B, B1.data(), wx, wcc, modes, count, loss);
+  };
+  return b;
 }
 
 RadialBasis collision_weighted_basis(std::size_t size, double x0) {
@@ -106,7 +114,7 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
   const Tier* tier = tiers;
   for (const Tier& t : tiers)
     if (x0 >= t.x0) tier = &t;
-  return {size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
+  RadialBasis b{size, [size, x0](const double* x, std::size_t count, double* B, double* xdB) {
             for (std::size_t p = 0; p < count; ++p) B[p] = 1.0;
             double* L = B + count;  // rows 1…: L_{m−1}, then weighted by r = (x + x₀)^(−1/2)
             if (!xdB) return weighted_laguerre_rows(x, count, x0, size - 1, L);  // the pair integrals' case: one pass
@@ -122,6 +130,10 @@ RadialBasis collision_weighted_basis(std::size_t size, double x0) {
             weight_rows(x, count, x0, 1, size, B);
           },
           tier->hermite, tier->laguerre};
+  b.loss = [size, x0](const double* x1, std::size_t count, const double* B, const double* wx, const double* wcc, double* loss) {
+    collision_weighted_loss_rows(x1, count, x0, size, B, wx, wcc, loss);
+  };
+  return b;
 }
 
 void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t i, double theta_k, double theta_i, const RadialBasis& basis,
@@ -144,9 +156,9 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   // A partner's shape factor depends on W alone (c_iz), so with shapes the points are laid out W fastest (p = l·Hs + h,
   // Hs = H rounded up to 4; the extra points weigh 0) and shaped_products weights each W's sums by every shape at once.
   const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), Hs = shaped ? (H + 3) / 4 * 4 : H, P = Hs * L;
-  thread_local std::vector<double> B, B1, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh, qk, qk1, qkk1;  // reused (fresh ones cost page faults)
+  thread_local std::vector<double> B, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh, qk, qk1, qkk1;  // reused (fresh ones cost page faults)
   thread_local Eigen::VectorXd y;
-  for (std::vector<double>* m : {&B, &B1, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
+  for (std::vector<double>* m : {&B, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
   for (std::vector<double>* v : {&x, &x1, &wx, &wcc}) v->resize(P);
   for (std::vector<double>* v : {&zk, &zk1, &wh, &qk, &qk1, &qkk1}) v->resize(Hs);
   y.resize(Eigen::Index(H));
@@ -175,8 +187,8 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
       for (std::size_t h = 0; h < H; ++h)
         point_run(L, to.at(h * L), Along<const double*>{g.laguerre.x.data(), lam}, Along<const double*>{g.laguerre.weight.data()},
                   Along<double>{wh[h]}, Along<double>{qk[h]}, Along<double>{qk1[h]}, Along<double>{qkk1[h]});
-    basis.eval(x.data(), P, B.data(), nullptr), basis.eval(x1.data(), P, B1.data(), nullptr);
-    loss_rows(B.data(), B1.data(), wx.data(), wcc.data(), N, P, loss.data());
+    basis.eval(x.data(), P, B.data(), nullptr);
+    basis.loss(x1.data(), P, B.data(), wx.data(), wcc.data(), loss.data());
     if (!shaped) {  // every shape Maxwellian: one product
       row_products(B.data(), loss.data(), P, N, 0, P, weights.data(), count, sums.data());
       continue;

@@ -64,6 +64,10 @@ struct RadialBasis {
   // 12 nodes 8.6e-4; tests/theory/test_tracer_diffusion_galerkin.cpp). Until 2026-12-06 80 nodes of a Gauss–Legendre
   // rule in (u/√(2V))^(1/10), which erred by 2.4e-7.
   std::size_t impact_points = 24;
+  // The pair integrals' loss rows at the post-collision points x1 (add_pair_collisions): loss[m·count + p] =
+  // B[m·count + p]·wx_p − b_m(x1_p)·wcc_p, B the basis at the pre-collision points. The Sonine basis: eval, then
+  // loss_rows; the collision-weighted one in one pass that never stores b(x1) (point_kernels.hpp).
+  std::function<void(const double* x1, std::size_t count, const double* B, const double* wx, const double* wcc, double* loss)> loss = nullptr;
 };
 RadialBasis sonine_radial_basis(std::size_t modes);                // L_m^(3/2)(x), m < modes (the Sonine modes)
 // 1, then L_{m−1}^(3/2)(x)/√(x + x₀). Its pair rule by x₀ (the near-singular 1/√(c² + x₀) needs the points only where

@@ -79,6 +79,13 @@ TEST_CASE("point kernels: the elementwise loops equal plain scalar loops bit for
     for (std::size_t m = 0; m < rows; ++m)
       for (std::size_t p = 0; p < count; ++p) loss_ref[m * count + p] = B[m * count + p] * wx[p] - B1[m * count + p] * wcc[p];
     CHECK(same_bits(loss, loss_ref));
+    // collision_weighted_loss_rows: the collision-weighted basis at x1 (1, then weighted_laguerre_rows) and loss_rows.
+    const std::vector<double> x1 = uniform(count, 0.0, 40.0, 61 + count);
+    std::vector<double> Bx1(rows * count, 1.0), fused(rows * count), fused_ref(rows * count);
+    weighted_laguerre_rows(x1.data(), count, 0.37, rows - 1, Bx1.data() + count);
+    loss_rows(B.data(), Bx1.data(), wx.data(), wcc.data(), rows, count, fused_ref.data());
+    collision_weighted_loss_rows(x1.data(), count, 0.37, rows, B.data(), wx.data(), wcc.data(), fused.data());
+    CHECK(same_bits(fused, fused_ref));
   }
 }
 
