@@ -292,15 +292,11 @@ __attribute__((target("avx2,fma"))) void shaped_products_avx2(const double* a, c
                                                               double* lanes) {
   shaped_products_of<Quad, QuadMem>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx2{});
 }
-namespace {
-struct FmaAvx512 {
-  __attribute__((target("avx2,fma,avx512f,avx512vl"))) Quad operator()(Quad x, Quad y, Quad acc) const { return _mm256_fmadd_pd(x, y, acc); }
-};
-}  // namespace
-__attribute__((target("avx2,fma,avx512f,avx512vl"))) void shaped_products_avx512(const double* a, const double* b, std::size_t count, std::size_t n,
-                                                              std::size_t stride, std::size_t L, const double* c, std::size_t shapes,
-                                                              double* lanes) {
-  shaped_products_of<Quad, QuadMem, FmaAvx512, 4>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx512{});
+// The AVX2 kernel's operations (FmaAvx2, inlined: its target a subset of this one's) with 32 registers: 4 rows a block.
+__attribute__((target("avx2,fma,avx512f,avx512vl"))) void shaped_products_avx512(const double* a, const double* b, std::size_t count,
+                                                                                  std::size_t n, std::size_t stride, std::size_t L,
+                                                                                  const double* c, std::size_t shapes, double* lanes) {
+  shaped_products_of<Quad, QuadMem, FmaAvx2, 4>(a, b, count, n, stride, L, c, shapes, lanes, FmaAvx2{});
 }
 bool avx512_available() {
   static const bool yes = avx2_fma_available() && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl");
