@@ -51,7 +51,8 @@ class ClosedFormTerms final : public SoninePairTerms {
     if (cached.beta != beta || cached.modes != std::size_t(order)) cached = {beta, std::size_t(order), 0, sonine_moment_beta_polynomials(beta, order)};
     return sonine_moment_pair_from(cached.polys, weight, beta, Tk / mk, Ti / mi, order);
   }
-  void moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order, SonineMomentRates* out) const override {
+  void moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order,
+                   SonineMomentRates* out) const override {
     // Four partners per vector (sonine_moment_pairs4_from), their β polynomials interleaved and kept per species k
     // (β and the order fixed within an integration); lanes past the last partner repeat it and are dropped.
     const std::size_t lanes = (N + 3) / 4 * 4;
@@ -164,7 +165,8 @@ class ImpactSpeedTerms final : public SoninePairTerms {
 
 }  // namespace
 
-void SoninePairTerms::moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order, SonineMomentRates* out) const {
+void SoninePairTerms::moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order,
+                                  SonineMomentRates* out) const {
   for (std::size_t i = 0; i < N; ++i) out[i] = moments(k, i, weight[i], m[k], m[i], T[k], T[i], order);
 }
 

@@ -45,10 +45,12 @@ class SoninePairTerms {
   // partner's a₂ … a₄); weight = n_i σ_ki² χ_ki. Closed forms at constant ε (every entry), the quadrature over the
   // impact speed otherwise (sonine_quadrature.hpp: entries beyond `order`, at least 3, are NaN).
   virtual SonineMomentRates moments(std::size_t k, std::size_t i, double weight, double mk, double mi, double Tk, double Ti, int order) const = 0;
-  // moments() of species k with every partner i < N (all species) at once (weight[i]; the masses m and temperatures T of all species)
-  // into out[i], the same numbers: as many calls of moments() (the quadrature), or four partners per vector (the closed
-  // forms: each lane's operations those of one pair's; SonineMomentCooling's assembly, N² pairs per right-hand side).
-  virtual void moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order, SonineMomentRates* out) const;
+  // moments() of species k with every partner i < N (all species) at once — weight[i], the masses m and temperatures T
+  // of all species — into out[i], the same numbers: as many calls of moments() (the quadrature), or four partners per
+  // vector (the closed forms: each lane's operations those of one pair's; SonineMomentCooling's assembly, N² pairs per
+  // right-hand side).
+  virtual void moments_row(std::size_t k, std::size_t N, const double* weight, const double* m, const double* T, int order,
+                           SonineMomentRates* out) const;
 };
 
 std::shared_ptr<const SoninePairTerms> make_sonine_pair_terms(const model::Restitution& law);

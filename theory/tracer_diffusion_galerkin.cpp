@@ -156,7 +156,8 @@ void add_pair_collisions(const CollisionRates& rates, std::size_t k, std::size_t
   // A partner's shape factor depends on W alone (c_iz), so with shapes the points are laid out W fastest (p = l·Hs + h,
   // Hs = H rounded up to 4; the extra points weigh 0) and shaped_products weights each W's sums by every shape at once.
   const std::size_t H = g.hermite.x.size(), L = g.laguerre.x.size(), Hs = shaped ? (H + 3) / 4 * 4 : H, P = Hs * L;
-  thread_local std::vector<double> B, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh, qk, qk1, qkk1;  // reused (fresh ones cost page faults)
+  // reused (fresh ones cost page faults)
+  thread_local std::vector<double> B, loss, sums, weights, lanes, shape_w, x, x1, wx, wcc, zk, zk1, wh, qk, qk1, qkk1;
   thread_local Eigen::VectorXd y;
   for (std::vector<double>* m : {&B, &loss}) m->resize(N * P);  // row-major, RadialBasis's layout
   for (std::vector<double>* v : {&x, &x1, &wx, &wcc}) v->resize(P);

@@ -255,7 +255,8 @@ TEST_CASE("Sonine moments: four pairs per vector give each pair's closed forms b
       double w[4], beta[4], Ak[4], Ai[4];
       std::vector<double> polys4(4 * groups);
       for (std::size_t l = 0; l < 4; ++l) {
-        w[l] = 0.1 + u(rng), beta[l] = (0.02 + 0.96 * u(rng)) * (1.0 + u(rng)), Ak[l] = std::pow(10.0, 2 * u(rng) - 1), Ai[l] = std::pow(10.0, 2 * u(rng) - 1);
+        w[l] = 0.1 + u(rng), beta[l] = (0.02 + 0.96 * u(rng)) * (1.0 + u(rng));
+        Ak[l] = std::pow(10.0, 2 * u(rng) - 1), Ai[l] = std::pow(10.0, 2 * u(rng) - 1);
         const std::vector<double> p = sonine_moment_beta_polynomials(beta[l], order);
         for (std::size_t j = 0; j < groups; ++j) polys4[4 * j + l] = p[j];
       }
