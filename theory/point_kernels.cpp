@@ -38,7 +38,7 @@ namespace {
 // Where weighted_laguerre_chunk's rows go: stored (Store), or taken at once into the loss rows (Loss).
 struct Store {
   double* B;
-  [[gnu::always_inline]] void operator()(std::size_t at, double v) const { B[at] = v; }
+  [[gnu::always_inline]] void operator()(std::size_t at, std::size_t, double v) const { B[at] = v; }
 };
 struct Loss {
   const double *B, *wx, *wcc;  // wx, wcc from the chunk's first point
@@ -80,13 +80,13 @@ template <class MakeSink>
 
 GRANMIX_VECTOR_CLONES void weighted_laguerre_rows(const double* x, std::size_t count, double x0, std::size_t modes, double* B) {
   weighted_laguerre_chunks(x, count, x0, modes, [B](std::size_t p0) {
-    return [to = Store{B + p0}](std::size_t at, std::size_t, double v) { to(at, v); };
+    return Store{B + p0};
   });
 }
 
 GRANMIX_VECTOR_CLONES void collision_weighted_loss_rows(const double* x1, std::size_t count, double x0, std::size_t size, const double* B,
                                                         const double* wx, const double* wcc, double* loss) {
-  for (std::size_t p = 0; p < count; ++p) loss[p] = B[p] * wx[p] - 1.0 * wcc[p];  // row 0, the constant 1
+  for (std::size_t p = 0; p < count; ++p) loss[p] = B[p] * wx[p] - wcc[p];  // row 0, the constant 1 (1·wcc = wcc exactly)
   weighted_laguerre_chunks(x1, count, x0, size - 1, [=](std::size_t p0) {
     return Loss{B + count + p0, wx + p0, wcc + p0, loss + count + p0};
   });
@@ -117,6 +117,14 @@ template <class Vec, class Mem, int R, int C, int K>
   }
 }
 
+// The row pointers of an R × C block: rows q … q + R − 1 of a and m … m + C − 1 of b, from point `off`.
+template <int R, int C>
+[[gnu::always_inline]] inline void block_rows(const double* a, const double* b, std::size_t count, std::size_t q, std::size_t m, std::size_t off,
+                                              const double* (&ra)[R], const double* (&rb)[C]) {
+  for (int i = 0; i < R; ++i) ra[i] = a + (q + std::size_t(i)) * count + off;
+  for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count + off;
+}
+
 // The R × C block of entries from row q of a and row m of b. Each entry keeps four partial sums, point l in lane
 // (l − first) mod 4 — one Quad, or two Pairs: the same operations in the same order for either width.
 template <class Vec, class Mem, int Sh, int R, int C>
@@ -124,14 +132,10 @@ template <class Vec, class Mem, int Sh, int R, int C>
                                              std::size_t len, const double* c, std::size_t shapes, std::size_t q, std::size_t m, double* out) {
   if constexpr (Sh > 0) shapes = Sh;
   constexpr int W = int(sizeof(Vec) / sizeof(double)), K = 4 / W;  // vectors per four points
-  Vec sum[R][C][K];
-  for (int i = 0; i < R; ++i)
-    for (int j = 0; j < C; ++j)
-      for (int k = 0; k < K; ++k) sum[i][j][k] = Vec{};
+  Vec sum[R][C][K] = {};
   const double* ra[R];
   const double* rb[C];
-  for (int i = 0; i < R; ++i) ra[i] = a + (q + std::size_t(i)) * count;
-  for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count;
+  block_rows<R, C>(a, b, count, q, m, 0, ra, rb);
   const std::size_t end = first + len, whole = first + len / 4 * 4;
   for (std::size_t l = first; l < whole; l += 4) {
     Vec x[R][K], y[C][K];
@@ -204,14 +208,10 @@ template <class Vec, class Mem, class Fma, int R, int C>
                                                 std::size_t L, const double* c, std::size_t shapes, std::size_t hb, std::size_t q, std::size_t m,
                                                 double* lanes, Fma fma) {
   constexpr int W = int(sizeof(Vec) / sizeof(double)), K = 4 / W;
-  Vec t[R][C][K];
-  for (int i = 0; i < R; ++i)
-    for (int j = 0; j < C; ++j)
-      for (int k = 0; k < K; ++k) t[i][j][k] = Vec{};
+  Vec t[R][C][K] = {};
   const double* ra[R];
   const double* rb[C];
-  for (int i = 0; i < R; ++i) ra[i] = a + (q + std::size_t(i)) * count + hb;
-  for (int j = 0; j < C; ++j) rb[j] = b + (m + std::size_t(j)) * count + hb;
+  block_rows<R, C>(a, b, count, q, m, hb, ra, rb);
   for (std::size_t l = 0, off = 0; l < L; ++l, off += stride) {
     Vec x[R][K], y[C][K];
     load_points<Vec, Mem, R, C, K>(ra, rb, off, x, y);
