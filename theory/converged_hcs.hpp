@@ -71,14 +71,18 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
 // of the partners' velocities that a product rule samples coarsely. MG Fig. 3's species 1 (α = 0.5) at v* = 0.19 / 0.11
 // / 0.04 (knots 0.05 apart): 1.0065 / 1.1485 / 1.3478 with 12 points, 1.0276 / 1.1169 / 1.1884 with 32, 1.0273 / 1.1183 /
 // 1.1616 with 64 (DSMC, quick seed 1: 1.034 ± 0.007 at 0.175, 1.100 ± 0.019 at 0.075); beyond v* = 0.3 all within
-// 0.3%; the moments move by ~1e-5 (measured 2026-12-05). So the distributions are solved with 64 points (~0.1 s per
-// MG binary), and their model error is computed by variants from that state: knots 3/2 as far apart (the splines'
-// error, largest near v = 0, where P ~ v² is small against the error of a Galerkin P: an elastic mixture's Φ, exactly
-// Maxwellian, comes out 8% high at a quarter of a thermal width, 0.7% at one, ≤ 0.05% from two on), the rule of half the
-// points (its change is the rule's error where the rule converges: 32 → 64 moves Φ by ≤ 0.3% at v* ≥ 0.11, 12 → 32 by
-// up to 2%), every partner seen through its full solved density (the one truncation left), the domain 9/7 as wide (the
-// tail near the grid's edge).
-inline constexpr std::size_t distribution_rule_points = 64;
+// 0.3%; the moments move by ~1e-5 (measured 2026-12-05). The rule, not the splines, is what limits Φ near v = 0: the
+// same mixture elastic (Φ exactly Maxwellian) errs in MG Fig. 3's first bin of 0.05 by 13.7% / 75% (species 1 / 2) with
+// 64 points, 5.4 / 45% with 128, 0.7 / 20% with 192, 0.09 / 3.4% with 256 — knots twice as dense or 8 speeds per
+// interval moved it by < 1%, and a trial space u²·Q (Φ itself a spline, smooth through v = 0) did not help (13.7 / 75%
+// at 64, 0.73 / 8.2% at 256; measured 2026-12-06). So the distributions take 256 points (~0.1 s per MG binary and
+// variant: the product rule's nodes below 1e-14 of the largest weight are left out, most of its 65 536), and their model
+// error is computed by variants from that state: knots 3/2 as far apart (the splines' error), the rule of half the
+// points (its change is the rule's error where the rule converges), every partner seen through its full solved density
+// (the one truncation left), the domain 9/7 as wide (the tail near the grid's edge). MG Fig. 3's computed model errors
+// with 64 → 256 points: Φ₁ ≤ 16% → ≤ 0.17%, Φ₂ ≤ 102% → ≤ 4.0% (its first bin; 0.9% in the second, ≤ 0.3% beyond),
+// Δ₁ ≤ 127% → ≤ 20% (at its zero crossing, v* = 0.53; ≤ 1.4% in the first bins).
+inline constexpr std::size_t distribution_rule_points = 256;
 enum class DistributionVariant { solved, sparser_knots, coarser_rule, partners_full, wider_domain };
 SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant);
 // Forgets the distributions' states solved so far (the next converged_distribution solves again): for a benchmark's

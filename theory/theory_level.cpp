@@ -192,7 +192,7 @@ class HcsConvergedLevel final : public TheoryLevel {
     return rates.law().is_viscoelastic() ? base_.settled_temperatures(rates) : hcs(rates).T;
   }
   // The companions' HCS is their distributions' state; the level's own the converged HCS (its 12-point rule: γ moves
-  // by ~1e-5 with 64).
+  // by ~1e-5 with 64 points, measured 2026-12-05; the distributions now take 256).
   SonineHcs hcs(const CollisionRates& rates) const override {
     return variant_ == DistributionVariant::solved ? converged_hcs(rates).hcs : converged_distribution(rates, variant_).hcs;
   }

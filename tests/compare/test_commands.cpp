@@ -81,19 +81,20 @@ TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside t
                                               "phi_paper", "delta_paper", "G_paper", "phi_knots", "delta_knots", "G_knots", "phi_rule",
                                               "delta_rule", "G_rule", "phi_partners", "delta_partners", "G_partners", "phi_domain",
                                               "delta_domain", "G_domain"});
-  // Species 1 over one to three thermal widths (v* = 0.4–1.2; λ₁ = 3.2): the computed model error of Φ is below 1%
-  // (measured ≤ 0.4%), where the first Sonine's Φ differs from it by more than 2% somewhere (3.1%; its judged model error
-  // was 9.4%), so the judged level's tolerance separates the two.
+  // Species 1 over its judged range (v* ≤ 1.2, three thermal widths; λ₁ = 3.2): the computed model error of Φ is below
+  // 0.5% in every bin (measured ≤ 0.17% since 2026-12-06, the 256-point rule; with 64 points it was 16% in the first bin,
+  // v* < 0.05), where the first Sonine's Φ differs from it by more than 2% from one thermal width on (3.1%; its judged
+  // model error was 9.4%), so the judged level's tolerance separates the two.
   double model = 0.0, sonine = 0.0;
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
-    if (t.at(row, "species") != 1.0 || t.at(row, "v") < 0.4 || t.at(row, "v") > 1.2) continue;
+    if (t.at(row, "species") != 1.0 || t.at(row, "v") > 1.2) continue;
     const double phi = t.at(row, "phi");
     double change = 0.0;  // compare/deviations.cpp: the largest companion change plus the level's own column
     for (const char* c : {"phi_knots", "phi_rule", "phi_partners", "phi_domain"}) change = std::max(change, std::abs(t.at(row, c) / phi - 1.0));
     model = std::max(model, change + t.at(row, "phi_error"));
-    sonine = std::max(sonine, std::abs(t.at(row, "phi_paper") / phi - 1.0));
+    if (t.at(row, "v") >= 0.4) sonine = std::max(sonine, std::abs(t.at(row, "phi_paper") / phi - 1.0));
   }
-  CHECK(model < 0.01);
+  CHECK(model < 0.005);
   CHECK(sonine > 0.02);
 }
 
