@@ -73,9 +73,9 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
 // 1.1616 with 64 (DSMC, quick seed 1: 1.034 ± 0.007 at 0.175, 1.100 ± 0.019 at 0.075); beyond v* = 0.3 all within
 // 0.3%; the moments move by ~1e-5 (measured 2026-12-05). The rule, not the splines, is what limits Φ near v = 0: the
 // same mixture elastic (Φ exactly Maxwellian) errs in MG Fig. 3's first bin of 0.05 by 13.7% / 75% (species 1 / 2) with
-// 64 points, 5.4 / 45% with 128, 0.7 / 20% with 192, 0.09 / 3.4% with 256 — knots twice as dense or 8 speeds per
-// interval moved it by < 1%, and a trial space u²·Q (Φ itself a spline, smooth through v = 0) did not help (13.7 / 75%
-// at 64, 0.73 / 8.2% at 256; measured 2026-12-06). So the distributions take 256 points (~0.1 s per MG binary and
+// 64 points, 5.4 / 45% with 128, 0.7 / 20% with 192, 0.09 / 3.4% with 256; a trial space u²·Q (Φ itself a spline,
+// smooth through v = 0) did not help (13.7 / 75% at 64, 0.73 / 8.2% at 256), nor, in it, knots twice as dense (13.3 /
+// 64% at 64 points) or 8 speeds per knot interval (the same to 0.03%; measured 2026-12-06). So the distributions take 256 points (~0.1 s per MG binary and
 // variant: the product rule's nodes below 1e-14 of the largest weight are left out, most of its 65 536), and their model
 // error is computed by variants from that state: knots 3/2 as far apart (the splines' error), the rule of half the
 // points (its change is the rule's error where the rule converges), every partner seen through its full solved density

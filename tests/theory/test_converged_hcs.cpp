@@ -109,9 +109,9 @@ TEST_CASE("converged HCS: an elastic mixture settles at equal temperatures, Maxw
 
 TEST_CASE("converged distributions: an elastic mixture's Phi is the Maxwellian at every speed, to the grid's error", "[theory]") {
   // MG Figs. 3, 7's mixture (μ = 4, δ = 1/2) elastic: Φ_k(v*) = (λ_k/π)^(3/2) exp(−λ_k v*²) exactly. The solved density's
-  // pointwise error (converged_distribution, 256-point rule), measured 2026-12-06, species 1 / 2: ≤ 1.4% / 5.3% from 0.05
-  // to 0.2 thermal widths (0.6% / 2.4% at 0.1), ≤ 0.07% / 0.24% from 0.2 to one width, ≤ 8.5e-5 / 3.0e-4 from one to two, ≤ 1.8e-4
-  // from two to 5.5. With the former 64-point rule: 13.7% / 75% over the first bin of MG Fig. 3, ≤ 0.31% / 1.08% from
+  // pointwise error (converged_distribution, 256-point rule), measured 2026-12-06, species 1 / 2: ≤ 1.4% / 5.3% from
+  // 0.05 to 0.2 thermal widths (0.6% / 2.4% at 0.1), ≤ 0.07% / 0.24% from 0.2 to one width, ≤ 8.5e-5 / 3.0e-4 from one
+  // to two, ≤ 1.8e-4 from two to 5.5. With the former 64-point rule: 13.7% / 75% over the first bin of MG Fig. 3, ≤ 0.31% / 1.08% from
   // one to two widths — each range below fails it. A density read at the wrong v₀ (2% off) or with the wrong
   // normalisation misses by several % at two widths.
   const SettledHcs d = converged_distribution(mg(4.0, 0.5, 1.0), DistributionVariant::solved);
@@ -123,8 +123,8 @@ TEST_CASE("converged distributions: an elastic mixture's Phi is the Maxwellian a
       double& range = x < 0.2 ? lowest : x < 1.0 ? low : x < 2.0 ? near : far;
       range = std::max(range, e);
     }
-    std::printf("elastic MG mixture, species %zu: Phi against the Maxwellian %.2e (0.05-0.2 widths), %.2e (0.2-1), %.2e (1-2), %.2e (2-5.5)\n",
-                k + 1, lowest, low, near, far);
+    std::printf("elastic MG mixture, species %zu: Phi against the Maxwellian %.2e (0.05-0.2 widths), %.2e (0.2-1), %.2e (1-2), "
+                "%.2e (2-5.5)\n", k + 1, lowest, low, near, far);
     CHECK(lowest < 0.08);
     CHECK(low < 0.004);
     CHECK(near < 0.001);
