@@ -5,15 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "model/model_error.hpp"
+
 namespace granmix::compare {
-
-namespace {
-
-bool covers(const model::CompareQuantity& q, int species) {
-  return q.species.empty() || std::find(q.species.begin(), q.species.end(), std::size_t(species)) != q.species.end();
-}
-
-}  // namespace
 
 std::string label(const model::CompareQuantity& q) {
   if (q.species.empty()) return q.name;
@@ -68,16 +62,14 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
   if (ts < 0 || dt < 0 || ds < 0) return out;
   for (const auto& q : quantities) {
     const std::string& predicted = q.theory.empty() ? q.name : q.theory;
-    const int a = theory.column(predicted), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
+    const model::ModelError model_error(q, theory);  // the computed tolerance's parts (model/model_error.hpp)
+    const int a = model_error.predicted(), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
     const int paper = theory.column(predicted + "_paper");
-    std::vector<int> lower;
-    for (const std::string& from : q.correction_from) lower.push_back(theory.column(predicted + "_" + from));
-    const int computed = q.error_column.empty() ? -1 : theory.column(q.error_column);
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];
       const int species = int(row[ts]);
-      if (!covers(q, species)) continue;
+      if (!model::covers(q, species)) continue;
       // Same scene grid on both sides: the locations agree to rounding.
       const auto match = std::find_if(dsmc.rows.begin(), dsmc.rows.end(), [&](const std::vector<double>& r) {
         return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
@@ -87,15 +79,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
-      // The last correction's size, where the scene names the lower level it came from (the largest, if it
-      // names several); a lower level the theory table does not hold at this point counts as no correction.
-      double correction = 0.0;
-      for (int l : lower)
-        if (l >= 0 && std::isfinite(row[l]) && d.theory != 0.0) correction = std::max(correction, std::abs(d.theory - row[l]) / std::abs(d.theory));
-      // The level's own computed model error: a judged point without it (a theory table that lacks the column, or
-      // NaN there) is judged as if it had none — stricter, never wider.
-      const double own = computed >= 0 && std::isfinite(row[computed]) ? row[computed] : 0.0;
-      d.model_error = q.relative + correction + own;
+      d.model_error = model_error.at(row);
       d.resolved = d.model_error <= q.model_error_max;
       d.pass = d.resolved && (std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute);
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;

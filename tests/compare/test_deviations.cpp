@@ -1,7 +1,10 @@
 // The judging rule of compare/deviations.cpp on hand-made tables: the computed model error and its cap.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+
 #include "compare/deviations.hpp"
+#include "model/model_error.hpp"
 
 using namespace granmix;
 
@@ -57,4 +60,26 @@ TEST_CASE("deviations: a computed model error above model_error_max fails the po
   // deviations.tsv: a `resolved` column after model_error (extended, nothing renamed).
   const std::string tsv = compare::format_deviations("", "t", d);
   CHECK(tsv.substr(0, tsv.find('\n')).ends_with("\tmodel_error\tresolved"));
+}
+
+TEST_CASE("model error: the judged points' largest computed model error is the one deviations applies", "[compare]") {
+  // model::max_model_error (model/model_error.hpp: what `granmix bench theory` reports beside a level's cost) over the
+  // hand-made tables: the 10% companion change at t = 2 is the largest; deviations applies the same number there.
+  Tables t;
+  const model::CompareQuantity q = msd(INFINITY);
+  CHECK(model::max_model_error(q, t.theory) == Approx(0.1));
+  CHECK(compare::deviations(t.theory, t.dsmc, {q})[1].model_error == model::max_model_error(q, t.theory));
+  // Judged points only: x_max = 1.5 leaves t = 1 (no correction), a species the quantity does not cover leaves none.
+  model::CompareQuantity early = q, other = q;
+  early.x_max = 1.5, other.species = {2};
+  CHECK(model::max_model_error(early, t.theory) == 0.0);
+  CHECK(model::max_model_error(other, t.theory) == 0.0);
+  // `relative` and the level's own error column add; a NaN there or in a companion counts as none (stricter).
+  t.theory.columns.push_back("msd_error");
+  t.theory.rows[0].push_back(0.02), t.theory.rows[1].push_back(std::nan(""));
+  model::CompareQuantity own = q;
+  own.error_column = "msd_error", own.relative = 0.01;
+  CHECK(model::max_model_error(own, t.theory) == Approx(0.11));  // t = 2: 0.01 + 0.1 + 0 > t = 1: 0.01 + 0 + 0.02
+  t.theory.rows[1][3] = std::nan("");
+  CHECK(model::max_model_error(own, t.theory) == Approx(0.03));
 }

@@ -1,0 +1,41 @@
+#include "model_error.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace granmix::model {
+
+bool covers(const CompareQuantity& q, int species) {
+  return q.species.empty() || std::find(q.species.begin(), q.species.end(), std::size_t(species)) != q.species.end();
+}
+
+ModelError::ModelError(const CompareQuantity& q, const Table& theory)
+    : relative_(q.relative), predicted_(theory.column(q.theory.empty() ? q.name : q.theory)),
+      own_(q.error_column.empty() ? -1 : theory.column(q.error_column)) {
+  const std::string& predicted = q.theory.empty() ? q.name : q.theory;
+  for (const std::string& from : q.correction_from) corrections_.push_back(theory.column(predicted + "_" + from));
+}
+
+double ModelError::at(const std::vector<double>& row) const {
+  const double value = row[std::size_t(predicted_)];
+  double correction = 0.0;
+  for (int l : corrections_)
+    if (l >= 0 && std::isfinite(row[std::size_t(l)]) && value != 0.0) correction = std::max(correction, std::abs(value - row[std::size_t(l)]) / std::abs(value));
+  const double own = own_ >= 0 && std::isfinite(row[std::size_t(own_)]) ? row[std::size_t(own_)] : 0.0;
+  return relative_ + correction + own;
+}
+
+double max_model_error(const CompareQuantity& q, const Table& theory) {
+  const ModelError error(q, theory);
+  const int species = theory.column("species");
+  if (error.predicted() < 0 || species < 0 || theory.columns.empty()) return 0.0;
+  double largest = 0.0;
+  for (const auto& row : theory.rows) {
+    const double x = row.front();
+    if (!covers(q, int(row[std::size_t(species)])) || x < q.t_min || x > q.x_max || !std::isfinite(row[std::size_t(error.predicted())])) continue;
+    largest = std::max(largest, error.at(row));
+  }
+  return largest;
+}
+
+}  // namespace granmix::model

@@ -1,0 +1,38 @@
+#pragma once
+// The judged theory's computed model error at a point of its table (README "tolerances", design.md §4): the quantity's
+// `relative`, plus the largest |theory − theory_<c>|/|theory| over its `correction_from` columns c (the corrections of
+// independent truncations: the largest), plus its `error_column` there (the level's own computed part). One place for
+// it: compare (deviations.cpp: the tolerance of each judged point) and bench (`granmix bench theory`: each level's
+// error beside its cost) read the same number.
+#include <vector>
+
+#include "scene.hpp"
+#include "table.hpp"
+
+namespace granmix::model {
+
+// Whether a quantity judges this species' rows (its `species`; empty: every row).
+bool covers(const CompareQuantity& q, int species);
+
+class ModelError {
+ public:
+  // The columns of `theory` the quantity reads, located once: its prediction (`theory`, default `name`), the
+  // corrections' `<prediction>_<c>` and its error column. A column the table lacks counts as no correction there.
+  ModelError(const CompareQuantity& q, const Table& theory);
+  // The prediction's column, -1 if the table has none (then nothing is judged).
+  int predicted() const { return predicted_; }
+  // At a row whose prediction is finite: relative + the largest correction + the own computed part (a NaN in a
+  // correction or the error column counts as none: stricter, never wider).
+  double at(const std::vector<double>& row) const;
+
+ private:
+  double relative_;
+  int predicted_, own_;
+  std::vector<int> corrections_;
+};
+
+// The largest model error over the judged rows of a theory table (x in [t_min, x_max], the species it covers); 0 where
+// the quantity has no prediction in it.
+double max_model_error(const CompareQuantity& q, const Table& theory);
+
+}  // namespace granmix::model
