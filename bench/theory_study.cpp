@@ -270,7 +270,8 @@ StudyResult theory_study(const StudyOptions& o) {
     for (const model::CompareQuantity& q : s.compare) model_error = std::max(model_error, model::max_model_error(q, full.table));
     if (sk > slowest) slowest = sk, slowest_scene = s.name;
     if (o.progress)
-      o.progress(fmt::format("{:<45} {} {:8.3f} s  model error <= {:.2f}% ({:.2f} s with its companions)  paper {:8.3f} s  levels differ by up to {:.1f}%",
+      o.progress(fmt::format("{:<45} {} {:8.3f} s  model error <= {:.2f}% ({:.2f} s with its companions)  paper {:8.3f} s  "
+                             "levels differ by up to {:.1f}%",
                              s.name, s.theory.level, sk, 100 * model_error, sf, sp, 100 * change));
     out.json.push_back(fmt::format("{{\"case\": \"levels: {}\", \"kinetic_seconds\": {:.6g}, \"paper_seconds\": {:.6g}, \"kinetic_change\": {:.4g}, "
                                    "\"level\": \"{}\", \"kinetic_model_error\": {:.4g}, \"kinetic_seconds_with_companions\": {:.6g}}}",

@@ -19,8 +19,10 @@ ModelError::ModelError(const CompareQuantity& q, const Table& theory)
 double ModelError::at(const std::vector<double>& row) const {
   const double value = row[std::size_t(predicted_)];
   double correction = 0.0;
-  for (int l : corrections_)
-    if (l >= 0 && std::isfinite(row[std::size_t(l)]) && value != 0.0) correction = std::max(correction, std::abs(value - row[std::size_t(l)]) / std::abs(value));
+  for (int l : corrections_) {
+    const double lower = l >= 0 ? row[std::size_t(l)] : NAN;
+    if (std::isfinite(lower) && value != 0.0) correction = std::max(correction, std::abs(value - lower) / std::abs(value));
+  }
   const double own = own_ >= 0 && std::isfinite(row[std::size_t(own_)]) ? row[std::size_t(own_)] : 0.0;
   return relative_ + correction + own;
 }
@@ -32,8 +34,8 @@ double max_model_error(const CompareQuantity& q, const Table& theory) {
   double largest = 0.0;
   for (const auto& row : theory.rows) {
     const double x = row.front();
-    if (!covers(q, int(row[std::size_t(species)])) || x < q.t_min || x > q.x_max || !std::isfinite(row[std::size_t(error.predicted())])) continue;
-    largest = std::max(largest, error.at(row));
+    const bool judged = covers(q, int(row[std::size_t(species)])) && x >= q.t_min && x <= q.x_max;
+    if (judged && std::isfinite(row[std::size_t(error.predicted())])) largest = std::max(largest, error.at(row));
   }
   return largest;
 }
