@@ -61,10 +61,9 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
   const int tt = 0, ts = theory.column("species"), dt = dsmc.column(x), ds = dsmc.column("species");
   if (ts < 0 || dt < 0 || ds < 0) return out;
   for (const auto& q : quantities) {
-    const std::string& predicted = q.theory.empty() ? q.name : q.theory;
     const model::ModelError model_error(q, theory);  // the computed tolerance's parts (model/model_error.hpp)
     const int a = model_error.predicted(), b = dsmc.column(q.name), e = dsmc.column(q.name + "_err");
-    const int paper = theory.column(predicted + "_paper");
+    const int paper = theory.column(model::predicted_name(q) + "_paper");
     if (a < 0 || b < 0 || e < 0) continue;
     for (const auto& row : theory.rows) {
       const double t = row[tt];
@@ -75,7 +74,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
         return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
       });
       if (match == dsmc.rows.end() || !std::isfinite(row[a]) || !std::isfinite((*match)[b])) continue;
-      Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, t >= q.t_min && t <= q.x_max, true};
+      Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, model::judges(q, t), true};
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
       d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);

@@ -4,6 +4,7 @@
 // independent truncations: the largest), plus its `error_column` there (the level's own computed part). One place for
 // it: compare (deviations.cpp: the tolerance of each judged point) and bench (`granmix bench theory`: each level's
 // error beside its cost) read the same number.
+#include <string>
 #include <vector>
 
 #include "scene.hpp"
@@ -11,8 +12,13 @@
 
 namespace granmix::model {
 
+// The theory column that predicts the quantity (its `theory`; default its `name`).
+const std::string& predicted_name(const CompareQuantity& q);
 // Whether a quantity judges this species' rows (its `species`; empty: every row).
 bool covers(const CompareQuantity& q, int species);
+// Whether it judges the row at x (the table's first column: t, v* or the swept value) of a species it covers:
+// x in [t_min, x_max]; rows outside are reported, not judged.
+bool judges(const CompareQuantity& q, double x);
 
 class ModelError {
  public:
