@@ -31,8 +31,9 @@ constexpr int max_passes = 60;  // v1 Fig. 4 at n2 = 0.01 (T2/T1 = 169, the ligh
 constexpr double settled_rates = 1e-8;   // |ζ_k − ζ_0| / τ_v,0⁻¹
 constexpr double settled_shapes = 1e-7;  // the largest change of any a₂, a₃ in a pass
 
-// How a species sees its partners: Maxwellians at T_j times 1 + a₂S₂ + a₃S₃ (the solve), or that plus the rest of each
-// partner's own solved density (speed_density_rest: the truncation check, whose rest follows the passes).
+// How a species sees its partners: Maxwellians at T_j times 1 + a₂S₂ + a₃S₃ (the moments' solve), or that plus the rest
+// of each partner's own solved density (speed_density_rest, following the passes, as fine as Settings::rest: the
+// moments' truncation check and the settled distributions).
 enum class Partners { sonine, full };
 
 struct Settings {
@@ -45,6 +46,7 @@ struct Settings {
   // known to ~1% (the passes gain 10–30× each), one or two passes fewer than to 1e-8 (measured 2026-12-05: 17 → 12
   // passes for v1 Fig. 7's four variants at ε = 0.5).
   double relative_stop = 0.0;
+  RestResolution rest{};  // Partners::full: how finely the rests are taken
 };
 
 struct State {
@@ -96,7 +98,7 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
   SpeedGridProblem self{};
   for (std::size_t j = 0; j < mix.size(); ++j) {
     SpeedGridProblem p = speed_grid_pair(rates, k, j, s.T[j], s.shapes[j]);
-    if (set.partners == Partners::full && !s.rest.empty()) p.rest = partner_rest_nodes(s.rest[j], s.T[j]);
+    if (set.partners == Partners::full && !s.rest.empty()) p.rest = partner_rest_nodes(s.rest[j], s.T[j], set.rest);
     SpeedGrid g = assemble_speed_grid(p, U, K, *set.rule, SpeedGridParts::density);
     if (j == 0) {
       collisions = g.collisions, grid = std::move(g), self = p;
@@ -122,7 +124,8 @@ SpeciesSolution solve_species(const CollisionRates& rates, std::size_t k, const 
     // wandered in it until it gave up); 1e-11 is far inside the passes' settled 1e-8.
     if (std::abs(f1) < 1e-11 || std::abs(z1 - z0) < 1e-13 * nu) {
       const Eigen::VectorXd density = P / grid.mass.dot(P);
-      return {z1, m.a2, m.a3, set.partners == Partners::full ? speed_density_rest(grid.h, mix[k].mass, density, m) : SpeedDensityRest{},
+      return {z1, m.a2, m.a3,
+              set.partners == Partners::full ? speed_density_rest(grid.h, mix[k].mass, density, m, set.rest) : SpeedDensityRest{},
               grid.h, density};
     }
     if (f1 == f0) break;
@@ -181,7 +184,7 @@ State settle(const CollisionRates& rates, State s, const Settings& set) {
     if (s.density.size() != N) throw std::logic_error("converged HCS: full partners need a solved state's densities");
     for (std::size_t k = 0; k < N; ++k)
       s.rest.push_back(speed_density_rest(s.density[k].first, rates.mixture()[k].mass, s.density[k].second,
-                                          {s.T[k], s.shapes[k].a2, s.shapes[k].a3, unused, unused, unused}));
+                                          {s.T[k], s.shapes[k].a2, s.shapes[k].a3, unused, unused, unused}, set.rest));
   }
   std::vector<double> a4(N, 0.0);
   for (std::size_t k = 0; k < s.rest.size(); ++k) a4[k] = rest_a4(s.rest[k], rates.mixture()[k].mass);
@@ -321,7 +324,21 @@ ConvergedHcs converged_hcs(const CollisionRates& rates, bool check) {
 
 namespace {
 
-// The distributions' state of a mixture (distribution_rule_points), solved once per process: the level and its four
+// The distributions' rule (converged_hcs.hpp) and its coarser variant: panels twice as wide, half the |w_⊥|² points.
+// Against a finer reference (12 points per panel of half a width, 256 in |w_⊥|²) the rule errs by ≤ 2.5e-6 / 1.9e-4 of
+// MG Fig. 3's Φ₁ / Φ₂, 2e-5 of Δ₁ and MG Fig. 7's G₁ (v* ≤ 1.2), and the coarser rule's change is larger at each of them:
+// 5.6e-5 / 8.8e-4, 8.3e-4, 3.5e-5 (measured 2026-12-07; 5 points per panel, 6 with 128 in |w_⊥|²: 1e-1, 1.6e-2 of Φ₂).
+// The distributions' partners: each through its full solved density, its rest at 2 speeds per knot interval and 8
+// directions; checked against 4 and 16. On MG Fig. 3 (measured 2026-12-07, against the level's Δ₁, Φ₁, Φ₂ with 2 and 4):
+// the directions set it — 8 move Δ₁ at its zero crossing (v* = 0.525, Δ₁ = 0.026) by 5.8e-4, 16 by 5.6e-4 — and 4
+// speeds move nothing beyond 4e-7 of Φ.
+constexpr RestResolution distribution_rests{2, 8}, finer_rests{4, 16};
+CollisionRule distribution_rule() { return CollisionRule(distribution_panel_points, distribution_panel_width, distribution_perp_points); }
+CollisionRule distribution_rule_coarser() {
+  return CollisionRule(distribution_panel_points, 2.0 * distribution_panel_width, distribution_perp_points / 2);
+}
+
+// The distributions' state of a mixture (distribution_rule()), solved once per process: the level and its four
 // companions each ask for it, and under the sanitizers the five solves cost CI a minute (the MG scenes' theory 3.4 →
 // ~2 s in a release build). Keyed by CollisionRates::key(); the last few mixtures are kept.
 struct DistributionState {
@@ -344,9 +361,11 @@ std::shared_ptr<const DistributionState> distribution_state(const CollisionRates
     const auto found = solved.find(key);
     if (found != solved.end()) return found->second;
   }
-  static const CollisionRule fine(distribution_rule_points);
+  static const CollisionRule fine = distribution_rule();
   Start start = sonine_start(rates);
+  // Sonine partners first (the quasi-Newton's start), then every partner through its full solved density.
   State best = settle(rates, start.state, {speed_grid_widths, 1.0, &fine, Partners::sonine});
+  best = settle(rates, std::move(best), {speed_grid_widths, 1.0, &fine, Partners::full, 0.0, distribution_rests});
   auto state = std::make_shared<const DistributionState>(DistributionState{std::move(start), std::move(best)});
   const std::lock_guard<std::mutex> lock(guard);
   if (solved.size() >= 8) solved.clear();
@@ -366,17 +385,17 @@ SettledHcs converged_distribution(const CollisionRates& rates, DistributionVaria
   const std::shared_ptr<const DistributionState> solved = distribution_state(rates);
   const Start& start = solved->start;
   const State& best = solved->best;
-  static const CollisionRule fine(distribution_rule_points), coarser(distribution_rule_points / 2);
+  static const CollisionRule fine = distribution_rule(), coarser = distribution_rule_coarser();
   switch (variant) {
     case DistributionVariant::solved: return reduced(rates.mixture(), best, start.beta);
     case DistributionVariant::sparser_knots:
-      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.5, &fine, Partners::sonine, to_change}), start.beta);
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.5, &fine, Partners::full, to_change, distribution_rests}), start.beta);
     case DistributionVariant::coarser_rule:
-      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &coarser, Partners::sonine, to_change}), start.beta);
-    case DistributionVariant::partners_full:
-      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &fine, Partners::full, to_change}), start.beta);
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &coarser, Partners::full, to_change, distribution_rests}), start.beta);
+    case DistributionVariant::partners_finer:
+      return reduced(rates.mixture(), settle(rates, best, {speed_grid_widths, 1.0, &fine, Partners::full, to_change, finer_rests}), start.beta);
     case DistributionVariant::wider_domain:
-      return reduced(rates.mixture(), settle(rates, best, {wider_domain_widths, 1.0, &fine, Partners::sonine, to_change}), start.beta);
+      return reduced(rates.mixture(), settle(rates, best, {wider_domain_widths, 1.0, &fine, Partners::full, to_change, distribution_rests}), start.beta);
   }
   throw std::invalid_argument("converged distribution: unknown variant");
 }

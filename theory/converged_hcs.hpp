@@ -67,23 +67,27 @@ struct ConvergedHcs : SettledHcs {
 ConvergedHcs converged_hcs(const CollisionRates& rates, bool check = false);
 
 // The settled distributions pointwise (MG Figs. 3, 7: Φ_k, Δ_k, G_k at every v*) need a finer collision rule than the
-// moments: the gain into the smallest speeds comes from collisions whose post-collision sphere passes near 0, a corner
-// of the partners' velocities that a product rule samples coarsely. MG Fig. 3's species 1 (α = 0.5) at v* = 0.19 / 0.11
-// / 0.04 (knots 0.05 apart): 1.0065 / 1.1485 / 1.3478 with 12 points, 1.0276 / 1.1169 / 1.1884 with 32, 1.0273 / 1.1183 /
-// 1.1616 with 64 (DSMC, quick seed 1: 1.034 ± 0.007 at 0.175, 1.100 ± 0.019 at 0.075); beyond v* = 0.3 all within
-// 0.3%; the moments move by ~1e-5 (measured 2026-12-05). The rule, not the splines, is what limits Φ near v = 0: the
-// same mixture elastic (Φ exactly Maxwellian) errs in MG Fig. 3's first bin of 0.05 by 13.7% / 75% (species 1 / 2) with
-// 64 points, 5.4 / 45% with 128, 0.7 / 20% with 192, 0.09 / 3.4% with 256; a trial space u²·Q (Φ itself a spline,
-// smooth through v = 0) did not help (13.7 / 75% at 64, 0.73 / 8.2% at 256), nor, in it, knots twice as dense (13.3 /
-// 64% at 64 points) or 8 speeds per knot interval (the same to 0.03%; measured 2026-12-06). So the distributions take 256 points (~0.1 s per MG binary and
-// variant: the product rule's nodes below 1e-14 of the largest weight are left out, most of its 65 536), and their model
-// error is computed by variants from that state: knots 3/2 as far apart (the splines' error), the rule of half the
-// points (its change is the rule's error where the rule converges), every partner seen through its full solved density
-// (the one truncation left), the domain 9/7 as wide (the tail near the grid's edge). MG Fig. 3's computed model errors
-// with 64 → 256 points: Φ₁ ≤ 16% → ≤ 0.17%, Φ₂ ≤ 102% → ≤ 4.0% (its first bin; 0.9% in the second, ≤ 0.3% beyond),
-// Δ₁ ≤ 127% → ≤ 20% (at its zero crossing, v* = 0.53; ≤ 1.4% in the first bins).
-inline constexpr std::size_t distribution_rule_points = 256;
-enum class DistributionVariant { solved, sparser_knots, coarser_rule, partners_full, wider_domain };
+// moments: the gain into the smallest speeds comes from collisions whose post-collision sphere passes near v′ = 0, where
+// the integrand over the partner's w_z has kinks (tracer_speed_grid.hpp, WzPanels). A Gauss–Hermite product rule,
+// the same nodes for every speed, straddles them: MG Fig. 3's mixture elastic (Φ exactly Maxwellian) erred in its first
+// bin of 0.05 by 13.7% / 75% (species 1 / 2) with 64 points, 5.4 / 45% with 128, 0.09 / 3.4% with 256 (stop 51), not
+// monotonically (512 in w_z: 2.4 / 9.6% from 0.05 to 0.2 thermal widths, against 256's 1.4 / 5.3%); a trial space u²·Q
+// (Φ itself a spline) did not help. So the distributions take w_z by Gauss–Legendre panels cut at those kinks for each
+// speed u (distribution_panel_points per panel ≤ distribution_panel_width partner widths wide; |w_⊥|² by
+// distribution_perp_points Gauss–Laguerre points): the elastic error from 0.05 to 0.2 widths 2.1e-4 / 2.4e-4, from 0.2
+// to 1 width 0.9e-4 (measured 2026-12-07). MG Fig. 3 at α = 0.5 moved by ≤ 3e-5 of Φ₂ in the first bin from the
+// 256-point Hermite rule — the inelastic mixture's nodes happened to straddle its kinks less — while the elastic check
+// that judges the rule fell 140-fold.
+//   And every partner is seen through its full solved density (Partners::full: its rest beyond 1 + a₂S₂ + a₃S₃ as
+// point masses, 8 directions; since 2026-12-07): through a₂, a₃ alone — the one truncation the moments' solve keeps —
+// MG Fig. 3's Δ₁ moved by 6e-3 (19% at its zero crossing, v* = 0.525), Φ₁ by ≤ 0.3%. The model error is computed by
+// variants from that state: knots 3/2 as far apart (the splines' error), the coarser rule (its change is the rule's
+// error where the rule converges), the partners' rests taken finer (16 directions, 4 speeds per knot interval), the
+// domain 9/7 as wide (the tail near the grid's edge). The distributions' HCS (its T_k, c_k) is the moments' own plus
+// that partner truncation: the moments' level keeps Sonine partners and computes their truncation as its model error.
+inline constexpr std::size_t distribution_panel_points = 10, distribution_perp_points = 128;
+inline constexpr double distribution_panel_width = 1.0;
+enum class DistributionVariant { solved, sparser_knots, coarser_rule, partners_finer, wider_domain };
 SettledHcs converged_distribution(const CollisionRates& rates, DistributionVariant variant);
 // Forgets the distributions' states solved so far (the next converged_distribution solves again): for a benchmark's
 // repeats, each of which should pay the solve as a run of `granmix theory` does.

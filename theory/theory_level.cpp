@@ -165,9 +165,9 @@ class KineticLevel final : public TheoryLevel {
 // within 0.27% at all 18, and MG Fig. 2's c_k 10–12% below the first Sonine at α = 0.3, as DSMC (README, "The converged
 // HCS"). Constant restitution only (a viscoelastic gas has no HCS).
 // Its settled distributions Φ_k are the solved speed densities themselves, no Sonine form at all (MG Figs. 3, 7), solved
-// with a finer collision rule (converged_distribution: why); their model error is computed per bin by four companions
-// from that solve — "-knots" (knots 3/2 as far apart), "-rule" (the rule of half the points), "-partners" (every partner
-// seen through its full solved density: the one truncation left), "-domain" (the grid 9/7 as wide) — and the level's own
+// with a finer collision rule and every partner through its full solved density (converged_distribution: why); their
+// model error is computed per bin by four companions from that solve — "-knots" (knots 3/2 as far apart), "-rule" (the
+// coarser rule), "-partners" (the partners' rests taken finer), "-domain" (the grid 9/7 as wide) — and the level's own
 // elastic-limit error (elastic_bin_error).
 class HcsConvergedLevel final : public TheoryLevel {
  public:
@@ -176,7 +176,7 @@ class HcsConvergedLevel final : public TheoryLevel {
     switch (variant_) {
       case DistributionVariant::sparser_knots: return "kinetic-hcs-converged-knots";
       case DistributionVariant::coarser_rule: return "kinetic-hcs-converged-rule";
-      case DistributionVariant::partners_full: return "kinetic-hcs-converged-partners";
+      case DistributionVariant::partners_finer: return "kinetic-hcs-converged-partners";
       case DistributionVariant::wider_domain: return "kinetic-hcs-converged-domain";
       case DistributionVariant::solved: break;
     }
@@ -191,8 +191,8 @@ class HcsConvergedLevel final : public TheoryLevel {
   std::vector<double> settled_temperatures(const CollisionRates& rates) const override {
     return rates.law().is_viscoelastic() ? base_.settled_temperatures(rates) : hcs(rates).T;
   }
-  // The companions' HCS is their distributions' state; the level's own the converged HCS (its 12-point rule: γ moves
-  // by ~1e-5 with 64 points, measured 2026-12-05; the distributions now take 256).
+  // The companions' HCS is their distributions' state; the level's own the converged HCS (its 12-point rule and Sonine
+  // partners, their truncation its computed model error; the distributions take panels and full partners).
   SonineHcs hcs(const CollisionRates& rates) const override {
     return variant_ == DistributionVariant::solved ? converged_hcs(rates).hcs : converged_distribution(rates, variant_).hcs;
   }
@@ -551,7 +551,7 @@ std::unique_ptr<TheoryLevel> make_theory_level(const std::string& name) {
   if (name == "kinetic-hcs-converged") return std::make_unique<HcsConvergedLevel>();
   if (name == "kinetic-hcs-converged-knots") return std::make_unique<HcsConvergedLevel>(DistributionVariant::sparser_knots);
   if (name == "kinetic-hcs-converged-rule") return std::make_unique<HcsConvergedLevel>(DistributionVariant::coarser_rule);
-  if (name == "kinetic-hcs-converged-partners") return std::make_unique<HcsConvergedLevel>(DistributionVariant::partners_full);
+  if (name == "kinetic-hcs-converged-partners") return std::make_unique<HcsConvergedLevel>(DistributionVariant::partners_finer);
   if (name == "kinetic-hcs-converged-domain") return std::make_unique<HcsConvergedLevel>(DistributionVariant::wider_domain);
   using Variant = ConvergedLevel::Variant;
   if (name == "kinetic-converged") return std::make_unique<ConvergedLevel>(Variant{});

@@ -3,9 +3,11 @@
 #include <gsl/gsl_integration.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <stdexcept>
 
 #include "model/errors.hpp"
 #include "parallel_each.hpp"
@@ -35,10 +37,6 @@ double spline_slope(double x) {
   return s * (3.0 + 6.0 * x - 9.0 * x * x) / 6.0;
 }
 
-// A rest's masses per knot interval (speed_density_rest): 2 Gauss points, half the partner nodes of the 4 of speed_rule
-// at the same accuracy — the rest's direction rule (4 points) sets it (tracer_speed_grid.hpp).
-constexpr std::size_t rest_points = 2;
-
 const GaussRule& speed_rule() {
   static const GaussRule uq = legendre(speed_grid_interval_points, 0.0, 1.0);
   return uq;
@@ -58,7 +56,7 @@ struct GasNode {
 };
 
 // The product rule's nodes below this share of its largest weight are left out: the tails of both rules, whose weights
-// fall to 1e-17 (12 points: 18 of 144 nodes; 16: 58 of 256; the distributions' 64: 3160 of 4096), carry together
+// fall to 1e-17 (12 points: 18 of 144 nodes; 16: 58 of 256; 64: 3160 of 4096), carry together
 // ≤ 1.3e-14 of the collisions' rate (weights times |w|, 12 points; 6e-14 for 64), so the grids move at rounding level
 // while the assembly, whose cost is per node, sheds 12–77% of them.
 constexpr double negligible_node = 1e-14;
@@ -80,6 +78,45 @@ std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& r
   return gas;
 }
 
+// The partner nodes of a panel rule at the intruder's speed u (tracer_speed_grid.hpp: w_z cut at the integrand's kinks
+// (i)–(iii)), into `gas` (its capacity reused from one u to the next); `z` holds the w_z nodes in the partner's widths
+// with their weights. Pruned as gas_nodes, on the product of the two rules' weights (the Gaussian's, the shape apart):
+// the |w_⊥|² loop stops where no later Laguerre weight can reach the threshold.
+void panel_gas_nodes(const SpeedGridProblem& p, const CollisionRule& rule, double u, std::vector<GasNode>& gas,
+                     std::vector<std::array<double, 2>>& z) {
+  const double reach = wz_panels_reach, sd = p.sd_gas, beta = p.beta;
+  std::array<double, 5> cuts{-reach, -(1.0 - beta) * u / (beta * sd), u / sd, -(2.0 - beta) * u / (beta * sd), reach};
+  for (std::size_t k = 1; k + 1 < cuts.size(); ++k) cuts[k] = std::clamp(cuts[k], -reach, reach);
+  std::sort(cuts.begin(), cuts.end());
+  const GaussRule& unit = rule.panels.unit;
+  const double norm = 1.0 / std::sqrt(2.0 * std::numbers::pi);
+  z.clear();
+  double largest_z = 0.0;
+  for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
+    const double a = cuts[k], length = cuts[k + 1] - a;
+    const auto n = std::size_t(std::ceil(length / rule.panels.width));  // 0 where two cuts coincide
+    for (std::size_t j = 0; j < n; ++j)
+      for (std::size_t t = 0; t < unit.x.size(); ++t) {
+        const double w = length / double(n), x = a + (double(j) + unit.x[t]) * w;
+        z.push_back({x, unit.weight[t] * w * norm * std::exp(-0.5 * x * x)});
+        largest_z = std::max(largest_z, z.back()[1]);
+      }
+  }
+  const GaussRule& wp = rule.wp;
+  const std::vector<double>& later = rule.panels.later_perp_weight;
+  const double threshold = negligible_node * largest_z * later[0];
+  gas.clear();
+  for (const auto& [x0, w0] : z)
+    for (std::size_t b = 0; b < wp.x.size() && w0 * later[b] >= threshold; ++b) {
+      const double weight = w0 * wp.weight[b];
+      if (weight < threshold) continue;
+      const double x = 0.5 * x0 * x0 + wp.x[b];
+      const double shape = p.gas.one + p.gas.a2 * sonine_S2(x) + p.gas.a3 * sonine_S3(x);
+      gas.push_back({sd * x0, sd * std::sqrt(2.0 * wp.x[b]), weight * shape * p.rate});
+    }
+  for (const PartnerNode& r : p.rest) gas.push_back({r.w_z, r.w_x, r.weight * p.rate});
+}
+
 // Each gas node's collision sphere at one u, one array per field: the first loop over the nodes has no branch and no
 // scattered store, so the compiler runs it on vector registers (square roots and divisions two at a time, four in the
 // AVX2/AVX-512 builds of density_interval and full_interval); the second
@@ -87,8 +124,24 @@ std::vector<GasNode> gas_nodes(const SpeedGridProblem& p, const CollisionRule& r
 // layout of sphere_gain.hpp, v1 Fig. 7's judged level 4.5 → 3.1 s on one thread, 2026-12-06.)
 struct Spheres {
   std::vector<double> lo, hi, total, speed_w, l1_w0, l1_w2, l1_point;
-  explicit Spheres(std::size_t n, bool full) : lo(n), hi(n), total(n), speed_w(n), l1_w0(full ? n : 0), l1_w2(full ? n : 0), l1_point(full ? n : 0) {}
+  void fit(std::size_t n, bool full) {  // room for n nodes (only ever grows)
+    for (std::vector<double>* a : {&lo, &hi, &total, &speed_w}) a->resize(std::max(a->size(), n));
+    if (full)
+      for (std::vector<double>* a : {&l1_w0, &l1_w2, &l1_point}) a->resize(std::max(a->size(), n));
+  }
 };
+// Each thread's arrays for the nodes, kept from one interval and one assembly to the next: allocated per interval, the
+// panel rule's (~7000 nodes, 0.4 MB) cost more in memset and page faults than the intervals' arithmetic (a test of MG
+// Fig. 7's distributions 1.5 → 8 s, 2026-12-07).
+struct NodeWork {
+  std::vector<GasNode> gas;  // a panel rule's nodes at one u
+  std::vector<std::array<double, 2>> z;
+  Spheres spheres;
+};
+NodeWork& node_work() {
+  thread_local NodeWork work;
+  return work;
+}
 
 // Knot interval i: the collision columns of its four trial functions (rows every test function), its drift and Gram
 // blocks. full: also the l = 1 harmonic's collisions and G, H, G₄ (SpeedGridParts::all); otherwise the speed density's
@@ -97,22 +150,28 @@ struct Spheres {
 // speeds), the splines' polynomial integrals through speed_rule. The loss term N_m(u) Σ w is the same spline values for
 // every gas velocity, so it is subtracted once per u.
 template <bool full>
-[[gnu::always_inline]] inline void interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
-                                            std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
+[[gnu::always_inline]] inline void interval(const SpeedGridProblem& p, const std::vector<GasNode>& fixed_gas, const CollisionRule& rule,
+                                            double h, std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
                                             IntervalMoments& out) {
-  const std::size_t nb = std::size_t(coll.rows()), nodes = gas.size();
+  const GaussRule& uq = rule.speeds;
+  const bool panels = !rule.panels.unit.x.empty();
+  const std::size_t nb = std::size_t(coll.rows());
   SphereGain gain(nb, h), gain1(full ? nb : 0, h);
-  Spheres sp(nodes, full);
-  double* __restrict lo = sp.lo.data();
-  double* __restrict hi = sp.hi.data();
-  double* __restrict total_of = sp.total.data();
-  double* __restrict speed_w = sp.speed_w.data();
-  double* __restrict l1_w0 = sp.l1_w0.data();
-  double* __restrict l1_w2 = sp.l1_w2.data();
-  double* __restrict l1_point = sp.l1_point.data();
+  NodeWork& work = node_work();
   const double beta = p.beta, mass_ratio = p.m2 / p.m1, pi = std::numbers::pi;
   for (std::size_t q = 0; q < uq.x.size(); ++q) {
     const double u = (double(i) + uq.x[q]) * h, wu = uq.weight[q] * h;
+    if (panels) panel_gas_nodes(p, rule, u, work.gas, work.z);
+    const std::vector<GasNode>& gas = panels ? work.gas : fixed_gas;
+    const std::size_t nodes = gas.size();
+    work.spheres.fit(nodes, full);
+    double* __restrict lo = work.spheres.lo.data();
+    double* __restrict hi = work.spheres.hi.data();
+    double* __restrict total_of = work.spheres.total.data();
+    double* __restrict speed_w = work.spheres.speed_w.data();
+    double* __restrict l1_w0 = work.spheres.l1_w0.data();
+    double* __restrict l1_w2 = work.spheres.l1_w2.data();
+    double* __restrict l1_point = work.spheres.l1_point.data();
     // C_m(u) = ∫dw f_gas ∫dσ̂ rate (g·σ̂)Θ [N_m(|v′|) − N_m(u)]; G(u), H(u) the same average of the gas's energy gain and of u·Δv.
     gain.clear();
     if constexpr (full) gain1.clear();
@@ -203,6 +262,14 @@ GaussRule legendre(std::size_t n, double a, double b) {
 CollisionRule::CollisionRule(std::size_t n, std::size_t speeds_per_interval)
     : wz(golub_welsch(n, false)), wp(golub_welsch(n, true)), speeds(legendre(speeds_per_interval, 0.0, 1.0)) {}
 
+CollisionRule::CollisionRule(std::size_t points, double width, std::size_t perp)
+    : wp(golub_welsch(perp, true)), speeds(legendre(speed_grid_interval_points, 0.0, 1.0)), panels{legendre(points, 0.0, 1.0), width, {}} {
+  if (!(width > 0.0)) throw std::invalid_argument("collision rule: the panels' width must be positive");
+  panels.later_perp_weight = wp.weight;
+  for (std::size_t b = wp.weight.size(); b-- > 1;)
+    panels.later_perp_weight[b - 1] = std::max(panels.later_perp_weight[b - 1], panels.later_perp_weight[b]);
+}
+
 SpeedGridProblem speed_grid_pair(const CollisionRates& rates, std::size_t k, std::size_t j, double Tj, const PartnerShape& partner) {
   const model::Mixture& mix = rates.mixture();
   const double s = mix.sigma(k, j), mj = mix[j].mass, mk = mix[k].mass;
@@ -228,15 +295,15 @@ Eigen::VectorXd stationary_speed_density(const Eigen::MatrixXd& collisions, cons
 
 // The two kinds of interval, each built for AVX2 and AVX-512 too (vector_clones.hpp: this file has no FMA contraction,
 // so every build gives the same numbers; byte-identical outputs measured on v1 Fig. 7, ~9% faster on one thread).
-GRANMIX_VECTOR_CLONES void density_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
+GRANMIX_VECTOR_CLONES void density_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const CollisionRule& rule, double h,
                                             std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
                                             IntervalMoments& out) {
-  interval<false>(p, gas, uq, h, i, coll, coll1, out);
+  interval<false>(p, gas, rule, h, i, coll, coll1, out);
 }
-GRANMIX_VECTOR_CLONES void full_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const GaussRule& uq, double h,
+GRANMIX_VECTOR_CLONES void full_interval(const SpeedGridProblem& p, const std::vector<GasNode>& gas, const CollisionRule& rule, double h,
                                          std::size_t i, Eigen::Ref<Eigen::MatrixXd> coll, Eigen::Ref<Eigen::MatrixXd> coll1,
                                          IntervalMoments& out) {
-  interval<true>(p, gas, uq, h, i, coll, coll1, out);
+  interval<true>(p, gas, rule, h, i, coll, coll1, out);
 }
 
 SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K, const CollisionRule& rule, SpeedGridParts parts) {
@@ -247,14 +314,14 @@ SpeedGrid assemble_speed_grid(const SpeedGridProblem& p, double U, std::size_t K
   Eigen::MatrixXd coll = Eigen::MatrixXd::Zero(n, Eigen::Index(4 * K));
   Eigen::MatrixXd coll1 = full ? coll : Eigen::MatrixXd::Zero(n, 0);
   std::vector<IntervalMoments> moments(K);
-  const std::vector<GasNode> gas = gas_nodes(p, rule);
+  const std::vector<GasNode> gas = rule.panels.unit.x.empty() ? gas_nodes(p, rule) : std::vector<GasNode>{};  // panels: per u
   parallel_each(K, [&](std::size_t i) {
     const auto cols = Eigen::Index(4 * i);
     auto c1 = full ? coll1.middleCols(cols, 4) : coll1.middleCols(0, 0);
     if (full)
-      full_interval(p, gas, rule.speeds, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      full_interval(p, gas, rule, h, i, coll.middleCols(cols, 4), c1, moments[i]);
     else
-      density_interval(p, gas, rule.speeds, h, i, coll.middleCols(cols, 4), c1, moments[i]);
+      density_interval(p, gas, rule, h, i, coll.middleCols(cols, 4), c1, moments[i]);
   });
   SpeedGrid g;
   g.h = h;
@@ -290,8 +357,8 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
           g.gain.dot(P) / norm, -g.drag.dot(P) / (norm * u2), g.gain4.dot(P) / norm};
 }
 
-SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r) {
-  static const GaussRule uq = legendre(rest_points, 0.0, 1.0);
+SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r, const RestResolution& res) {
+  const GaussRule uq = legendre(res.speeds, 0.0, 1.0);
   const std::size_t K = std::size_t(P.size()) - 3;
   const double a = m / (2.0 * r.theta), maxwell = 4.0 * std::numbers::pi * std::pow(a / std::numbers::pi, 1.5);
   SpeedDensityRest out{r.theta, {}};
@@ -316,8 +383,8 @@ double speed_density_at(double h, const Eigen::VectorXd& P, double u) {
   return density;
 }
 
-std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T) {
-  static const GaussRule angles = legendre(4, -1.0, 1.0);
+std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T, const RestResolution& res) {
+  const GaussRule angles = legendre(res.directions, -1.0, 1.0);
   const double scale = std::sqrt(T / rest.theta);
   std::vector<PartnerNode> nodes;
   nodes.reserve(rest.masses.size() * angles.x.size());

@@ -44,9 +44,29 @@ inline constexpr std::size_t speed_grid_rule_points = 12;
 // moved by up to 21× its computed model error (4 against 6 or 8: ≤ 0.5% of it); nor the heavy intruder's θ (v2 Fig. 5:
 // 2.6e-6, beyond the 1e-6 model error of its early MSD).
 inline constexpr std::size_t speed_grid_interval_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
+//   The settled distributions (converged_hcs.hpp) take w_z by panels instead: the integrand is not smooth in w_z where,
+// at the intruder's speed u, (i) the post-collision sphere passes through v′ = 0, |c| = R ⇔ w_z = −(1 − β)u/β (the
+// lowest speed it reaches, |c − R|, turns there: the gain into the smallest speeds has a kink), (ii) g = 0, w_z = u,
+// and (iii) c = 0, w_z = −(2 − β)u/β (the last two on the axis w_⊥ = 0, sharp features for the smallest |w_⊥|). A
+// Gauss–Hermite rule in w_z, the same for every u, straddles them: MG Fig. 3's mixture elastic (Φ exactly Maxwellian)
+// erred by 1.4% / 5.3% (species 1 / 2) from 0.05 to 0.2 thermal widths with 256 points; Gauss–Legendre panels cut at
+// (i)–(iii) for each u reach 2.1e-4 / 2.4e-4 (10 points per panel ≤ one partner width wide; 8 points 7.9e-4 / 1.5e-3,
+// and with the cut at (i) alone 1.9e-3 / 5.2e-3). |w_⊥|² stays Gauss–Laguerre: from one to two widths 1.4e-4 /
+// 2.6e-4 with 64 points, 7e-6 / 1.7e-5 with 128, 5e-6 / 7e-6 with 256 (8 points per panel; measured 2026-12-07;
+// test_converged_hcs.cpp, test_tracer_temperature.cpp).
+struct WzPanels {
+  GaussRule unit;      // the Gauss–Legendre points of one panel, on [0, 1] (empty: w_z by CollisionRule::wz)
+  double width = 0.0;  // the widest panel, in the partner's √(T/m); the panels cover ±wz_panels_reach
+  std::vector<double> later_perp_weight;  // [b]: the largest |w_⊥|² weight from node b on (where pruning may stop)
+};
+inline constexpr double wz_panels_reach = 8.6;  // the partner's Maxwellian there: e^(−37) ≈ 1e-16 of its peak
 struct CollisionRule {
   GaussRule wz, wp, speeds;
+  WzPanels panels;
   explicit CollisionRule(std::size_t n, std::size_t speeds_per_interval = speed_grid_interval_points);
+  // w_z by panels of `points` Gauss–Legendre points at most `width` wide, cut at each u's (i)–(iii); |w_⊥|² by `perp`
+  // Gauss–Laguerre points.
+  CollisionRule(std::size_t points, double width, std::size_t perp);
 };
 inline constexpr std::size_t moment_collision_speeds = 3;
 
@@ -106,17 +126,25 @@ struct SpeedMoments {
 };
 SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const Eigen::VectorXd& P);
 
+// How finely a partner's rest is taken: Gauss points per knot interval in its speed (speed_density_rest) and Gauss–
+// Legendre directions about the species' velocity (partner_rest_nodes). The default: 2 and 4 — half the partner nodes
+// of 4 speeds at the same accuracy, the direction rule setting it (below). The settled distributions take it as their
+// partners and check it against 4 and 8 (converged_hcs.hpp).
+struct RestResolution {
+  std::size_t speeds = 2, directions = 4;
+};
+
 // What a speed density P (knots h apart, ∫P = 1; species of mass m, its speed_moments r: θ, a₂, a₃) holds beyond the Maxwellian
-// at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at 2 Gauss points per
+// at θ times 1 + a₂S₂ + a₃S₃ — the part a partner's Sonine shape leaves out — as signed masses at res.speeds Gauss points per
 // knot interval, pruned below 1e-8 of the largest (1e-6 moves nothing at five digits). Their sums of u⁰ and u² are ≤
 // 8.6e-7 and 2.2e-5 of the sums of |mass| and |mass|u² (4 points, the rule of the grid's moments: 8.5e-7, 1.4e-5).
 struct SpeedDensityRest {
   double theta = 1.0;
   std::vector<std::array<double, 2>> masses;  // (speed, mass), ∫P = 1
 };
-SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r);
+SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P, const SpeedMoments& r, const RestResolution& res = {});
 // Those masses as a partner at temperature T (speeds scaled by √(T/θ): the shape kept), the directions of w by a
-// 4-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). How well, as
+// res.directions-point Gauss–Legendre rule in cos α about the species' velocity (the problem is symmetric about it). How well, as
 // the rest's effect on the converged HCS (its T ratio, a₂ and the D ratios' partner part, converged_hcs.hpp), over v1
 // Figs. 4 (n₂ = 0.01, 0.1), 5 (ε = 0.2, 0.8), 7 (ε = 0.2, 0.5, 0.8) and MG's μ = 2, 4 binaries against 4 speeds per
 // interval and 12 directions (measured 2026-12-06): the direction rule sets it — 4 directions within 4.6% (v1 Fig. 5,
@@ -124,7 +152,7 @@ SpeedDensityRest speed_density_rest(double h, double m, const Eigen::VectorXd& P
 // 6 within 1.1% — and 2 speeds per interval move each by ≤ 0.6% from 4 (8: the same to five digits), at half the
 // partner nodes (448 per pair, v1 Fig. 7). converged_hcs's check needs its change to a few percent: a part of a
 // computed model error (v1 Fig. 7: ≤ 1.3e-4 of D_k/D_1 beside a total of ≤ 1.6e-3).
-std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T);
+std::vector<PartnerNode> partner_rest_nodes(const SpeedDensityRest& rest, double T, const RestResolution& res = {});
 
 // The n-point Gauss–Legendre rule on [a, b] (GSL's fixed tables).
 GaussRule legendre(std::size_t n, double a, double b);

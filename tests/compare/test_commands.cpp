@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -81,20 +82,30 @@ TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside t
                                               "phi_paper", "delta_paper", "G_paper", "phi_knots", "delta_knots", "G_knots", "phi_rule",
                                               "delta_rule", "G_rule", "phi_partners", "delta_partners", "G_partners", "phi_domain",
                                               "delta_domain", "G_domain"});
-  // Species 1 over its judged range (v* ≤ 1.2, three thermal widths; λ₁ = 3.2): the computed model error of Φ is below
-  // 0.5% in every bin (measured ≤ 0.17% since 2026-12-06, the 256-point rule; with 64 points it was 16% in the first bin,
-  // v* < 0.05), where the first Sonine's Φ differs from it by more than 2% from one thermal width on (3.1%; its judged
-  // model error was 9.4%), so the judged level's tolerance separates the two.
-  double model = 0.0, sonine = 0.0;
+  // Over the judged ranges (v* ≤ 1.2, three thermal widths of species 1; λ₁ = 3.2): the computed model error of Φ₁ and Φ₂
+  // is below 0.5% in every bin, the first included (measured 0.11% / 0.09% since 2026-12-07: w_z by panels, full
+  // partners; with the 256-point Hermite rule Φ₂'s first bin had 4.0%, with 64 points Φ₁'s 16%), and Δ₁'s below 2% up to
+  // v* = 1.1, its zero crossing at v* = 0.525 included (measured 0.84%; with Sonine partners 19% there), where the first
+  // Sonine's Φ₁ differs from the level by more than 2% from one thermal width on (3.1%; its judged model error was 9.4%),
+  // so the judged level's tolerance separates the two.
+  double model[2] = {0.0, 0.0}, delta = 0.0, sonine = 0.0;
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
-    if (t.at(row, "species") != 1.0 || t.at(row, "v") > 1.2) continue;
-    const double phi = t.at(row, "phi");
-    double change = 0.0;  // compare/deviations.cpp: the largest companion change plus the level's own column
-    for (const char* c : {"phi_knots", "phi_rule", "phi_partners", "phi_domain"}) change = std::max(change, std::abs(t.at(row, c) / phi - 1.0));
-    model = std::max(model, change + t.at(row, "phi_error"));
-    if (t.at(row, "v") >= 0.4) sonine = std::max(sonine, std::abs(t.at(row, "phi_paper") / phi - 1.0));
+    const auto k = std::size_t(t.at(row, "species")) - 1;
+    if (t.at(row, "v") > 1.2) continue;
+    // compare/deviations.cpp: the largest companion change plus the level's own column
+    auto model_error = [&](const std::string& q) {
+      double change = 0.0;
+      for (const char* c : {"_knots", "_rule", "_partners", "_domain"}) change = std::max(change, std::abs(t.at(row, q + c) / t.at(row, q) - 1.0));
+      return change + t.at(row, q + "_error");
+    };
+    model[k] = std::max(model[k], model_error("phi"));
+    if (k == 0 && t.at(row, "v") <= 1.1) delta = std::max(delta, model_error("delta"));
+    if (k == 0 && t.at(row, "v") >= 0.4) sonine = std::max(sonine, std::abs(t.at(row, "phi_paper") / t.at(row, "phi") - 1.0));
   }
-  CHECK(model < 0.005);
+  std::printf("mg-fig03: computed model errors Phi1 %.2e, Phi2 %.2e, Delta1 %.2e; first Sonine's Phi1 off by %.3f\n", model[0], model[1], delta, sonine);
+  CHECK(model[0] < 0.005);
+  CHECK(model[1] < 0.005);
+  CHECK(delta < 0.02);
   CHECK(sonine > 0.02);
 }
 

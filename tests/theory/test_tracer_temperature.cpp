@@ -121,30 +121,50 @@ TEST_CASE("intruder temperature: v2 Fig. 5's intruders heating the gas, self-con
   CHECK(std::abs(dilute.theta / tracer.theta - 1.0) < 1e-5);
 }
 
+namespace {
+
+// The speed-grid tests' nine intruders (mass 1, 2, 10 at ε = 0.2, 0.5, 0.9) in a Maxwellian gas at the paper's ζ: f is
+// given each one's problem, ζ and thermal width.
+template <class F>
+void for_each_grid_intruder(F&& f) {
+  for (const double m2 : {1.0, 2.0, 10.0})
+    for (const double eps : {0.2, 0.5, 0.9}) {
+      const CollisionRates r = intruder(m2, eps);
+      const TracerLimit paper = tracer_limit(r);
+      f(speed_grid_problem(r, {1.0, 0.0, 0.0}), 2.0 / paper.tau0, std::sqrt(paper.theta / m2));
+    }
+}
+// One intruder's stationary density on K = 56 knots over 7 widths (as the solves), normalised, and its moments.
+struct GridSolve {
+  double h;
+  Eigen::VectorXd P;
+  SpeedMoments m;
+};
+GridSolve solve_grid(const SpeedGridProblem& p, double zeta, double width, const CollisionRule& rule, SpeedGridParts parts) {
+  const SpeedGrid g = assemble_speed_grid(p, 7.0 * width, 56, rule, parts);
+  const Eigen::VectorXd P = stationary_speed_density(g.collisions, g, zeta);
+  REQUIRE(P.size() > 0);
+  return {g.h, P / g.mass.dot(P), speed_moments(g, p, P)};
+}
+
+}  // namespace
+
 TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary density's moments, 2 do not, and its far tail needs 4", "[theory]") {
   // CollisionRule::speeds (tracer_speed_grid.hpp): the converged HCS's moment solves take 3 Gauss points in u per knot
   // interval, every pointwise density 4. Against 8, an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian
   // gas at the paper's ζ (K = 56 knots over 7 widths, as the solves): measured 2026-12-06, 3 speeds θ ≤ 6.8e-9, a₂ ≤
   // 5.7e-7 (2: up to 2.2e-6 and 2.5e-3); the density at 6 thermal widths with 4 speeds ≤ 1.8e-6, with 3 up to 4.8e-3.
   double theta3 = 0.0, a2_3 = 0.0, a2_2 = 0.0, tail4 = 0.0, tail3 = 0.0;
-  for (const double m2 : {1.0, 2.0, 10.0})
-    for (const double eps : {0.2, 0.5, 0.9}) {
-      const CollisionRates r = intruder(m2, eps);
-      const TracerLimit paper = tracer_limit(r);
-      const double zeta = 2.0 / paper.tau0, width = std::sqrt(paper.theta / m2);
-      const SpeedGridProblem p = speed_grid_problem(r, {1.0, 0.0, 0.0});
-      auto solve = [&](std::size_t speeds) {
-        const SpeedGrid g = assemble_speed_grid(p, 7.0 * width, 56, CollisionRule(speed_grid_rule_points, speeds), SpeedGridParts::density);
-        const Eigen::VectorXd P = stationary_speed_density(g.collisions, g, zeta);
-        REQUIRE(P.size() > 0);
-        const SpeedMoments m = speed_moments(g, p, P);
-        return std::array<double, 3>{m.theta, m.a2, speed_density_at(g.h, P, 6.0 * width) / g.mass.dot(P)};
-      };
-      const auto ref = solve(8), s4 = solve(4), s3 = solve(3), s2 = solve(2);
-      auto rel = [](double x, double y) { return std::abs(x / y - 1.0); };
-      theta3 = std::max(theta3, rel(s3[0], ref[0])), a2_3 = std::max(a2_3, rel(s3[1], ref[1])), a2_2 = std::max(a2_2, rel(s2[1], ref[1]));
-      tail4 = std::max(tail4, rel(s4[2], ref[2])), tail3 = std::max(tail3, rel(s3[2], ref[2]));
-    }
+  for_each_grid_intruder([&](const SpeedGridProblem& p, double zeta, double width) {
+    auto solve = [&](std::size_t speeds) {
+      const GridSolve s = solve_grid(p, zeta, width, CollisionRule(speed_grid_rule_points, speeds), SpeedGridParts::density);
+      return std::array<double, 3>{s.m.theta, s.m.a2, speed_density_at(s.h, s.P, 6.0 * width)};
+    };
+    const auto ref = solve(8), s4 = solve(4), s3 = solve(3), s2 = solve(2);
+    auto rel = [](double x, double y) { return std::abs(x / y - 1.0); };
+    theta3 = std::max(theta3, rel(s3[0], ref[0])), a2_3 = std::max(a2_3, rel(s3[1], ref[1])), a2_2 = std::max(a2_2, rel(s2[1], ref[1]));
+    tail4 = std::max(tail4, rel(s4[2], ref[2])), tail3 = std::max(tail3, rel(s3[2], ref[2]));
+  });
   std::printf("speed grid, 3 collision speeds: theta %.1e, a2 %.1e (2 speeds: %.1e); tail at 6 widths: 4 speeds %.1e, 3 speeds %.1e\n", theta3,
               a2_3, a2_2, tail4, tail3);
   CHECK(theta3 < 2e-8);
@@ -152,4 +172,31 @@ TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary de
   CHECK(a2_2 > 2e-5);
   CHECK(tail4 < 1e-5);
   CHECK(tail3 > 1e-3);
+}
+
+TEST_CASE("speed grid: w_z by panels cut at the kinks converges where the Hermite rule straddles them, near u = 0", "[theory]") {
+  // CollisionRule's panels (tracer_speed_grid.hpp: the settled distributions' rule, 10 points per panel one width wide,
+  // 128 in |w_⊥|²) and the 64-point Gauss–Hermite product rule, each against finer panels (12 points per half width,
+  // 256): an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian gas, its stationary θ and the gas's energy
+  // gain (SpeedGridParts::all: both kinds of interval assembled), and its speed density at 0.1 thermal widths. Measured
+  // 2026-12-07: panels θ ≤ 2.7e-8, gain ≤ 2.7e-8, density near 0 ≤ 8.4e-5; Hermite 2.5e-7, 2.4e-7 and up to 1.1e-2 (the
+  // equal-mass intruder at ε = 0.9). A wrong panel weight or a missing panel moves θ by far more.
+  double theta = 0.0, gain = 0.0, low = 0.0, hermite_low = 0.0;
+  const CollisionRule panels(10, 1.0, 128), hermite(64), reference(12, 0.5, 256);
+  for_each_grid_intruder([&](const SpeedGridProblem& p, double zeta, double width) {
+    auto solve = [&](const CollisionRule& rule) {
+      const GridSolve s = solve_grid(p, zeta, width, rule, SpeedGridParts::all);
+      return std::array<double, 3>{s.m.theta, s.m.gain, speed_density_at(s.h, s.P, 0.1 * width)};
+    };
+    const auto a = solve(panels), b = solve(hermite), c = solve(reference);
+    auto rel = [](double x, double y) { return std::abs(x / y - 1.0); };
+    theta = std::max(theta, rel(a[0], c[0])), gain = std::max(gain, rel(a[1], c[1]));
+    low = std::max(low, rel(a[2], c[2])), hermite_low = std::max(hermite_low, rel(b[2], c[2]));
+  });
+  std::printf("speed grid, panels against finer panels: theta %.1e, gain %.1e, density at 0.1 widths %.1e (64-point Hermite: %.1e)\n",
+              theta, gain, low, hermite_low);
+  CHECK(theta < 1e-7);
+  CHECK(gain < 1e-7);
+  CHECK(low < 2e-4);
+  CHECK(hermite_low > 2e-3);
 }
