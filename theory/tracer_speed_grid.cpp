@@ -94,10 +94,12 @@ void panel_gas_nodes(const SpeedGridProblem& p, const CollisionRule& rule, doubl
   double largest_z = 0.0;
   for (std::size_t k = 0; k + 1 < cuts.size(); ++k) {
     const double a = cuts[k], length = cuts[k + 1] - a;
-    const auto n = std::size_t(std::ceil(length / rule.panels.width));  // 0 where two cuts coincide
+    const auto n = std::size_t(std::ceil(length / rule.panels.width));
+    if (n == 0) continue;  // two cuts coincide
+    const double w = length / double(n);
     for (std::size_t j = 0; j < n; ++j)
       for (std::size_t t = 0; t < unit.x.size(); ++t) {
-        const double w = length / double(n), x = a + (double(j) + unit.x[t]) * w;
+        const double x = a + (double(j) + unit.x[t]) * w;
         z.push_back({x, unit.weight[t] * w * norm * std::exp(-0.5 * x * x)});
         largest_z = std::max(largest_z, z.back()[1]);
       }
