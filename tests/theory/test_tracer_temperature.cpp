@@ -174,7 +174,9 @@ TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary de
   CHECK(tail3 > 1e-3);
 }
 
-TEST_CASE("speed grid: w_z by panels cut at the kinks converges where the Hermite rule straddles them, near u = 0", "[theory]") {
+// [slow]: not under the sanitizers (5.5 s here, most of it the finer reference rule; the panel rule's code runs there in
+// the converged distributions' tests and "granmix theory mg-fig07").
+TEST_CASE("speed grid: w_z by panels cut at the kinks converges where the Hermite rule straddles them, near u = 0", "[theory][slow]") {
   // CollisionRule's panels (tracer_speed_grid.hpp: the settled distributions' rule, 10 points per panel one width wide,
   // 128 in |w_⊥|²) and the 64-point Gauss–Hermite product rule, each against finer panels (12 points per half width,
   // 256): an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian gas, its stationary θ and the gas's energy
