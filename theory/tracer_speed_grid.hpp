@@ -45,7 +45,9 @@ inline constexpr std::size_t speed_grid_rule_points = 12;
 // 2.6e-6, beyond the 1e-6 model error of its early MSD).
 inline constexpr std::size_t speed_grid_interval_points = 4;  // Gauss–Legendre points in u per knot interval (exact for the Gram matrix)
 //   The settled distributions (converged_hcs.hpp) take w_z by panels instead: the integrand is not smooth in w_z where,
-// at the intruder's speed u, (i) the post-collision sphere passes through v′ = 0, |c| = R ⇔ w_z = −(1 − β)u/β (the
+// at the intruder's speed u (v = u ẑ), with v′ = v − β(g·σ̂)σ̂ (v1 Eq. 3, MG Eqs. 23–24; β = m₁(1 + ε)/(m₁ + m₂)) on the
+// sphere of centre c = v − βg/2 and radius R = βg/2, where |c|² − R² = v·(v − βg) = u((1 − β)u + βw_z):
+// (i) the post-collision sphere passes through v′ = 0, |c| = R ⇔ w_z = −(1 − β)u/β (the
 // lowest speed it reaches, |c − R|, turns there: the gain into the smallest speeds has a kink), (ii) g = 0, w_z = u,
 // and (iii) c = 0, w_z = −(2 − β)u/β (the last two on the axis w_⊥ = 0, sharp features for the smallest |w_⊥|). A
 // Gauss–Hermite rule in w_z, the same for every u, straddles them: MG Fig. 3's mixture elastic (Φ exactly Maxwellian)
@@ -128,8 +130,8 @@ SpeedMoments speed_moments(const SpeedGrid& g, const SpeedGridProblem& p, const 
 
 // How finely a partner's rest is taken: Gauss points per knot interval in its speed (speed_density_rest) and Gauss–
 // Legendre directions about the species' velocity (partner_rest_nodes). The default: 2 and 4 — half the partner nodes
-// of 4 speeds at the same accuracy, the direction rule setting it (below). The settled distributions take it as their
-// partners and check it against 4 and 8 (converged_hcs.hpp).
+// of 4 speeds at the same accuracy, the direction rule setting it (below). The settled distributions take 2 and 8 for
+// their partners and check them against 4 and 16 (converged_hcs.cpp, distribution_rests).
 struct RestResolution {
   std::size_t speeds = 2, directions = 4;
 };
