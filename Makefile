@@ -25,7 +25,7 @@ build: deps
 
 # ctest runs JOBS tests at once, each with OpenMP threads of its own: more threads than cores, where libgomp's default
 # spinning at barriers burns the cores another test needs (v1 Fig. 8-θ4's theory beside two running DSMCs: 70 s, 30 s
-# passive). OMP_WAIT_POLICY=passive: the 251 tests outside [slow] 130 → 121 s on 2 cores (2026-12-05).
+# passive). OMP_WAIT_POLICY=passive: the 251 tests outside [slow] take 121 s on 2 cores (130 s spinning).
 CTEST_ENV = OMP_WAIT_POLICY=passive
 
 test: build

@@ -1,4 +1,4 @@
-// Study `checkpoint` (issue 14): what a snapshot of a replica in flight costs. For a one-species gas
+// Study `checkpoint`: what a snapshot of a replica in flight costs. For a one-species gas
 // of N particles, with and without displacements: the file's bytes, the seconds to encode and write
 // it (temp file, fsync, rename), and to read, check and decode it, per 10⁶ particles. Then the
 // overhead on a run: a replica of a direct binary run without checkpointing, with checkpointing on

@@ -1,6 +1,6 @@
 #pragma once
 // CPU cycles and instructions of the calling thread from the hardware counters (Linux
-// perf_event_open), for the selector study's cycles per trial (issue 13). Where the counters do not
+// perf_event_open), for the selector study's cycles per trial. Where the counters do not
 // exist (virtual machines, perf_event_paranoid > 2, other systems) available() is false and the study
 // leaves its cycle columns out.
 #include <cstdint>

@@ -1,4 +1,4 @@
-// Study `dsmc-error` (issue 6): the statistical error of T_k and MSD_k against CPU time as
+// Study `dsmc-error`: the statistical error of T_k and MSD_k against CPU time as
 // particles × replicas grow, on the binary 1:100 of v1 Fig. 2 (ε = 0.5, equal start, t = 100).
 // The standard error over replicas should fall as 1/√work; the fitted exponent is reported, and the
 // figure draws the line err ∝ work^(−1/2) through the largest run.

@@ -1,5 +1,5 @@
-// Why the first-Sonine temperatures of the light species miss DSMC by 2–4% in the transient (issue 12, the T_k
-// target of 1.5%): the first-Sonine rates ζ_k(T, c) (sonine_cooling.hpp) are integrated twice from the scene's
+// Why the first-Sonine temperatures of the light species miss DSMC by 2–4% in the transient (the T_k
+// target is 1.5%): the first-Sonine rates ζ_k(T, c) (sonine_cooling.hpp) are integrated twice from the scene's
 // start, once with their own cumulants (the ⟨c⁴⟩ balance truncated at a₂, relaxing from the Maxwellian start) and
 // once with the cumulants the DSMC measures, c_k(t). If the second lies on DSMC, the rates are right and the gap
 // is the cumulant equation's (the kinetic level's first Sonine). Beside them the kinetic-cooling3 variant (a₂ and
@@ -16,9 +16,9 @@
 #include "gaps_parts.hpp"
 #include "model/scene.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/sonine_cooling.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/sonine/sonine_cooling.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/level_catalogue.hpp"
 
 namespace granmix::bench {
 
@@ -90,7 +90,7 @@ GapsPart cumulant_gaps(const StudyOptions& o) {
   for (std::size_t series = 0; series < 3; ++series) {
     const std::filesystem::path file = o.scenes_folder / (std::string(scenes[series]) + ".toml");
     if (!std::filesystem::exists(file)) continue;
-    model::Scene s = model::load_scene(file.string());
+    model::Scene s = theory::load_scene(file.string());
     if (s.initial.kind == model::InitialState::Kind::aged || theory::scene_time_unit(s) != 1.0)
       throw std::logic_error(s.name + ": the cumulant gaps need a Maxwellian start in physical time units");
     s.observables = model::Observables{};

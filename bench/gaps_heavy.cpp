@@ -11,8 +11,8 @@
 #include "gaps_parts.hpp"
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/msd.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "velocity_memory.hpp"
 
 namespace granmix::bench {

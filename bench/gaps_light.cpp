@@ -11,8 +11,8 @@
 
 #include "gaps_parts.hpp"
 #include "model/enskog.hpp"
-#include "theory/msd.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "velocity_memory.hpp"
 
 namespace granmix::bench {
@@ -98,7 +98,7 @@ GapsPart light_gaps(const StudyOptions& o) {
                                 vacf[j], M_T[j], M_D2[j], M_mem[j], Mj.first / eq17[j], Mj.second / eq17[j]});
     }
     const char* name = k == 0 ? "light" : "heavy";
-    out.summary.push_back(fmt::format("bo1-fig02 {}: D/D[1] measured at t >= {:g}: {:.3f} +- {:.3f} (physics-beyond.md expects 0.92 for the "
+    out.summary.push_back(fmt::format("bo1-fig02 {}: D/D[1] measured at t >= {:g}: {:.3f} +- {:.3f} (docs/physics-beyond.md expects 0.92 for the "
                                       "light species); integrator check: VACF ODE vs theory/ {:.1e}",
                                       name, t[late_even], r_late.first, r_late.second, check));
     for (double tr : {1.0, 10.0, 100.0, 1e4, t_end / 10}) {

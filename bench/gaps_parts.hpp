@@ -1,5 +1,5 @@
 #pragma once
-// The two halves of `granmix bench gaps` (issue 12, item 1: why the papers' theory and the exact DSMC
+// The two halves of `granmix bench gaps` (why the papers' theory and the exact DSMC
 // differ): the light species of v1 Fig. 2 (gaps_light.cpp), the heavy rare species of v1 Fig. 8
 // (gaps_heavy.cpp) and the kinetic level's temperatures against the DSMC's cumulants (gaps_cumulant.cpp),
 // plus helpers they use.
@@ -10,7 +10,7 @@
 #include "model/table.hpp"
 #include "study.hpp"
 #include "tagged_moments.hpp"
-#include "theory/collision_rates.hpp"
+#include "theory/rates/collision_rates.hpp"
 
 namespace granmix::bench {
 
@@ -22,7 +22,7 @@ inline std::vector<double> log_grid(double from, double to, int per_decade) {
   return t;
 }
 
-// First-Sonine momentum rate ν_k = τ_v,k⁻¹ + ξ_k/2 (physics-beyond.md §1) and ξ_k at temperatures T.
+// First-Sonine momentum rate ν_k = τ_v,k⁻¹ + ξ_k/2 (docs/physics-beyond.md §1) and ξ_k at temperatures T.
 struct Rates {
   std::vector<double> nu, xi;
 };
@@ -42,7 +42,7 @@ inline std::vector<double> series(const TaggedRun& run, std::size_t k, TaggedRun
   return s;
 }
 
-// c = 2a₂ = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] from per-particle means (physics.md §6).
+// c = 2a₂ = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] from per-particle means (docs/physics.md §6).
 inline double cumulant_of(double v2, double v4) { return 2.0 * (0.6 * v4 / (v2 * v2) - 1.0); }
 
 // Index of the grid time closest to t.

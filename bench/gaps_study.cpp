@@ -1,5 +1,5 @@
-// Study `gaps` (issue 12, item 1): measures in the exact DSMC what the papers' theory assumes, to put
-// the gaps between them down to named causes with numbers (README "Why theory and DSMC differ").
+// Study `gaps`: measures in the exact DSMC what the papers' theory assumes, to put
+// the gaps between them down to named causes with numbers (docs/validation.md, "Why theory and DSMC differ").
 //   gaps.tsv           bo1-fig02: T_k, c_k, Q_k = ⟨R·v⟩, ν_eff against ν_k, D/D[1], MSD variants
 //   gaps_fig08.tsv     bo1-fig08 at N = 5e4, 1e5, 2e5: per (N, t, species) T, MSD ratio and their factors
 //   gaps_replicas.tsv  bo1-fig08 at the last time: one row per (N, replica, species)

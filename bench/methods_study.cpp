@@ -1,4 +1,4 @@
-// Study `methods` (issue 6): the Montanero–Garzó time-step scheme's Δt bias against its cost, next
+// Study `methods`: the Montanero–Garzó time-step scheme's Δt bias against its cost, next
 // to the exact event-driven run. MG Fig. 1 system (μ = 10, δ = 2, w = 1, α = 0.5), settled start,
 // c_1 and γ at t = 50 t0 (t0 = λ11/v01(0)); Δt = factor · λ11/v01(t) for factors 0.3 … 0.003 (MG used
 // 3e-3). The bias is the difference from the event-driven value; both carry replica errors.
@@ -10,8 +10,8 @@
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
 #include "study.hpp"
-#include "theory/initial_state.hpp"
-#include "theory/time_unit.hpp"
+#include "theory/histories/initial_state.hpp"
+#include "theory/rates/time_unit.hpp"
 
 namespace granmix::bench {
 

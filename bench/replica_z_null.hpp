@@ -1,5 +1,5 @@
 #pragma once
-// What a few replicas of a species with a few particles can say (issue 12, item 1: v1 Fig. 8's
+// What a few replicas of a species with a few particles can say (v1 Fig. 8's
 // species of 1–40 particles). Null model: every particle's displacement at long times is an isotropic
 // Gaussian of the right variance, so one replica's MSD estimate is the mean of n values |X|²/3 (a
 // χ² of 3n degrees of freedom over 3n), and the scene's z = (mean over R replicas − truth)/(standard

@@ -1,4 +1,4 @@
-// `granmix bench schedule` (issue 14): the makespan of the validation on 1 to 256 ranks, simulated
+// `granmix bench schedule`: the makespan of the validation on 1 to 256 ranks, simulated
 // from measured unit costs. The input is units.tsv of a `granmix validate` run (every DSMC unit — one
 // replica — with its estimated and actual collisions and CPU seconds). Quick fidelity is simulated
 // from the measured seconds themselves; paper fidelity (`make figures`) from them scaled per ensemble
@@ -22,6 +22,7 @@
 #include "dsmc/unit_cost.hpp"
 #include "model/errors.hpp"
 #include "study.hpp"
+#include "theory/scene_theory.hpp"
 
 namespace granmix::bench {
 
@@ -86,7 +87,7 @@ Workload paper_workload(const std::filesystem::path& scenes, const std::map<std:
   std::sort(files.begin(), files.end());
   double longest = 0.0;
   for (const auto& f : files) {
-    const model::Scene s = model::load_scene(f.string());
+    const model::Scene s = theory::load_scene(f.string());
     dsmc::RunOptions quick, paper;
     paper.fidelity = "paper";
     const auto q = dsmc::plan_scene_dsmc(s, quick), p = dsmc::plan_scene_dsmc(s, paper);

@@ -1,4 +1,4 @@
-// Study `selectors` (issue 6): accepted collisions per second, trial pairs per second and acceptance
+// Study `selectors`: accepted collisions per second, trial pairs per second and acceptance
 // of every pair selector on the systems of bench/systems.hpp, one replica on one thread, the median
 // of `repeats` runs. The reference systems (v2 Table 1: 691 species, t = 10; the binary 1:100) run to
 // the paper's t = 10; the others to a time a pilot run says holds about 1e6 collisions (Bird and the
@@ -141,7 +141,7 @@ StudyResult selectors_study(const StudyOptions& o) {
       if (x.method == m && x.system == sys && x.particles >= minp && x.particles <= maxp) return &x;
     return nullptr;
   };
-  // Targets of issue 13 (reference: the paper authors' code on this machine class, issue 13's table).
+  // Targets; reference: the paper authors' code on this machine class (docs/performance.md).
   const Measured *lr5 = find("lowrank", "exp691", 50000, 200000), *lr6 = find("lowrank", "exp691", 500000, 2000000),
                  *bd5 = find("bird", "exp691", 50000, 200000), *bg5 = find("bird-global", "exp691", 50000, 200000),
                  *bin = find("direct", "binary", 50000, 200000);

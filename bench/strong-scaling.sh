@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Strong scaling of the DSMC scheduler on this machine (issue 14): the same validation (default: the
+# Strong scaling of the DSMC scheduler on this machine: the same validation (default: the
 # quick scenes bo1-fig02, bo1-fig05, bo2-fig05, mg-fig01) as 1 process x 1 thread, 1 x 2 threads,
 # 2 MPI ranks x 1 thread, and 1 MPI rank x 2 threads (bound and unbound); wall time of the DSMC phase (summary.json
 # dsmc_wall_seconds), speed-up against 1 x 1, and a check that the outputs are the same bytes.

@@ -1,5 +1,5 @@
 #pragma once
-// Speed-against-error studies of `granmix bench STUDY` (design.md §3, issue 6). A study computes a
+// Speed-against-error studies of `granmix bench STUDY` (docs/architecture.md §3, docs/performance.md). A study computes a
 // table (numbers only, long form with a `series` column) and says how to plot it; compare/
 // command_bench.cpp writes the TSV with provenance, the gnuplot figure and the JSON lines.
 // Speed is measured here, never asserted in tests.
@@ -43,9 +43,9 @@ StudyResult selectors_study(const StudyOptions& o);
 StudyResult theory_study(const StudyOptions& o);
 StudyResult dsmc_error_study(const StudyOptions& o);
 StudyResult methods_study(const StudyOptions& o);
-StudyResult gaps_study(const StudyOptions& o);  // issue 12: causes of the theory–DSMC gaps
-StudyResult schedule_study(const StudyOptions& o);  // issue 14: makespan on 1–256 ranks from measured units
-StudyResult checkpoint_study(const StudyOptions& o);  // issue 14: snapshot bytes and seconds
+StudyResult gaps_study(const StudyOptions& o);  // causes of the theory–DSMC gaps
+StudyResult schedule_study(const StudyOptions& o);  // makespan on 1–256 ranks from measured units
+StudyResult checkpoint_study(const StudyOptions& o);  // snapshot bytes and seconds
 
 // Study names in the order `granmix bench` runs them.
 const std::vector<std::string>& study_names();

@@ -1,5 +1,5 @@
 #pragma once
-// The systems the selector study runs (issue 6): one species, the binary 1:100 of v1 Fig. 2, a
+// The systems the selector study runs: one species, the binary 1:100 of v1 Fig. 2, a
 // ternary of one material, the 691-species system of v2 Fig. 6 / Table 1, and polydisperse
 // mixtures of M species (power law θ = 3 or exponential) with at least one particle per species.
 // All start Maxwellian at T = 1 with total density 0.1.

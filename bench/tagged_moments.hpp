@@ -1,8 +1,8 @@
 #pragma once
-// What the kinetic theory assumes, measured in the exact event-driven DSMC (issue 12, item 1): per
+// What the kinetic theory assumes, measured in the exact event-driven DSMC: per
 // species and sample time the sums Σv², Σv⁴, ΣR·v and ΣR² over the particles of each replica. The
 // study drives the event loop itself (dsmc/event_loop.hpp) instead of extending run_ensemble: the
-// tagged correlation Q_k = ⟨R·v⟩ (physics-beyond.md §2) is needed only here. Sums, not means, are
+// tagged correlation Q_k = ⟨R·v⟩ (docs/physics-beyond.md §2) is needed only here. Sums, not means, are
 // kept so that replicas can be pooled (species of one particle) and left out one at a time (jackknife).
 #include <cstddef>
 #include <cstdint>

@@ -1,18 +1,18 @@
-// Study `theory` (issue 6): error against CPU time of the theory's pieces.
+// Study `theory`: error against CPU time of the theory's pieces.
 //   series 0, 1: CVODE relative tolerance 1e-4 … 1e-12, error against a 1e-13 reference, for a binary
 //                (T and Eq. 17 MSD from an equal start, 16 times to 1e12) and a 200-species power law
 //                (temperatures at 16 times to 1e12);
 //   series 2, 3: the MSD by the Eq. (17) quadrature and by the VACF ODE (binary, to 1e4): error of
 //                each against its own reference at 1e-13; how far the two models lie apart is a summary
-//                line (the VACF ODE relaxes the tagged velocity at the momentum rate, physics.md §3);
+//                line (the VACF ODE relaxes the tagged velocity at the momentum rate, docs/physics.md §3);
 //   series 4–6: viscoelastic rates (v1 Fig. 9 binary, Aκ^(2/5) = 0.09, temperatures at 16 times to
 //                1e8): exact ε by quadrature at rtol 1e-6 … 1e-12, the paper's series (v1 A3/A4) and
 //                the Padé form, error against the exact quadrature at 1e-13.
 // Targets: 500-species temperatures and MSD to 1e12 under 1 s (Eq. 17 quadrature, and the VACF MSD
 // integrated with the temperatures), 5000 species with the VACF MSD under 60 s; a γ(α) curve of 100
-// points < 10 ms; every kinetic scene's curves at the kinetic level under 1 s (issue 12), each beside the
+// points < 10 ms; every kinetic scene's curves at the kinetic level under 1 s, each beside the
 // paper level's cost and the size of what the kinetic level changes (max |kinetic − paper|/max(|kinetic|,
-// |paper|) over the scene's value columns; its gap to DSMC is in docs/paper-fidelity.md).
+// |paper|) over the scene's value columns; its gap to DSMC is in docs/validation.md).
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -28,11 +28,12 @@
 #include "model/model_error.hpp"
 #include "model/scene.hpp"
 #include "study.hpp"
-#include "theory/converged_hcs.hpp"
-#include "theory/msd.hpp"
+#include "theory/grid/converged_hcs.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 namespace granmix::bench {
 
@@ -204,7 +205,7 @@ StudyResult theory_study(const StudyOptions& o) {
   const double e500v = max_rel(v500, vacf_curve(r500, 1e-11));
   out.summary.push_back(fmt::format("{} species, temperatures and VACF MSD (ODE) at 16 times to t = 1e12 (rtol 1e-8): {:.3f} s, "
                                     "max relative error {:.1e} against rtol 1e-11 (target < 1 s)", M, s500v, e500v));
-  // Issue 13: 5000 species the same way, one run (about 25 CPU s; not in --quick).
+  // 5000 species the same way, one run (about 25 CPU s; not in --quick).
   double s5000v = 0.0;
   if (!o.quick) {
     const theory::CollisionRates r5000 = power_law_rates(5000, 0.5);
@@ -237,8 +238,8 @@ StudyResult theory_study(const StudyOptions& o) {
   std::string slowest_scene;
   std::size_t measured = 0;
   for (const auto& f : files) {
-    const model::Scene s = model::load_scene(f.string());
-    if (s.theory.level == "paper" || (o.quick && measured == 3)) continue;
+    const model::Scene s = theory::load_scene(f.string());
+    if (theory::find_level(s.theory.level).reported_beside_others || (o.quick && measured == 3)) continue;
     ++measured;
     theory::TheoryResult kin, pap;
     // Each repeat cold, as a run of `granmix theory`: the distributions' solve is kept per process (converged_hcs.hpp).

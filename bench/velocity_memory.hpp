@@ -1,6 +1,6 @@
 #pragma once
 #include "dsmc/ensemble.hpp"
-// The tagged-particle velocity memory (physics-beyond.md §2): Q = ⟨R·v⟩ obeys
+// The tagged-particle velocity memory (docs/physics-beyond.md §2): Q = ⟨R·v⟩ obeys
 //   dQ/dt = ⟨v²⟩ − ν Q,  dM/dt = 2Q  (M = ⟨R²⟩, Q(0) = M(0) = 0),
 // where ⟨v²⟩ = 3T_k/m_k is exact (free flight between collisions) and ν is whatever the collisions do
 // to R·v: the first-Sonine theory says ν_k = τ_v,k⁻¹ + ξ_k/2. Measured in a window [a, b]:

@@ -1,7 +1,7 @@
 #pragma once
 // glibc's allocator tuned for granmix's pattern of work: the theory levels allocate and free the same large blocks
 // (Galerkin and speed-grid matrices, 0.1–30 MB) at every pass, which by default go back to the system (mmap above
-// 128 kB, the heap trimmed above 128 kB free) and come back as fresh zero pages — page faults were 14% of v1 Fig. 5's
+// 128 kB, the heap trimmed above 128 kB free) and come back as fresh zero pages — page faults then take 14% of v1 Fig. 5's
 // judged level (0.31 of 2.28 s in the kernel). Keeping freed memory in the process costs its peak resident size,
 // which these levels have reached anyway.
 namespace granmix::compare {

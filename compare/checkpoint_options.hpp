@@ -1,6 +1,6 @@
 #pragma once
 // --checkpoint DIR, --checkpoint-every SECONDS and --restart DIR of `granmix dsmc|compare|validate`
-// (issue 14): the folder is prepared and every file in it checked against the planned runs before
+// (docs/user-guide.md): the folder is prepared and every file in it checked against the planned runs before
 // anything is computed or written (exit 2 naming the file otherwise), and a SIGINT/SIGTERM then makes
 // every replica in flight write a last snapshot before the run ends (compare/interrupts.hpp).
 #include <CLI/CLI.hpp>

@@ -1,4 +1,4 @@
-// granmix bench [STUDY] [--out DIR] [--json] [--repeats N] [--quick] (design.md §3): the speed-
+// granmix bench [STUDY] [--out DIR] [--json] [--repeats N] [--quick] (docs/architecture.md §3): the speed-
 // against-error studies of bench/. Each writes DIR/bench/<study>/<study>.tsv (provenance, one header
 // line, numbers; the `series` column indexes the labels listed in a comment line), <study>.gp and
 // the figure; --json prints one JSON object per measured case on stdout instead of the tables.

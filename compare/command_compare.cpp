@@ -1,7 +1,7 @@
 // granmix compare SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
 // granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N] (also DIR/index.html)
 // Both also [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS] (checkpoint_options.hpp).
-// (design.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
+// (docs/architecture.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +14,7 @@
 #include "scene_compare.hpp"
 #include "scheduler.hpp"
 #include "summary_table.hpp"
+#include "theory/scene_theory.hpp"
 
 namespace granmix::compare {
 
@@ -58,7 +59,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
   return [o, scene]() {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
-    const model::Scene s = model::load_scene(*scene);
+    const model::Scene s = theory::load_scene(*scene);
     std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, run_options(*o));
     o->checkpointing = start_checkpointing(o->checkpoint, plan);
     const scheduler::GatheredReplicas replicas = scheduler::run_units(plan, o->threads);
@@ -97,7 +98,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     };
     for (const auto& f : files) {
       try {
-        model::Scene s = model::load_scene(f.string());
+        model::Scene s = theory::load_scene(f.string());
         for (auto& d : dsmc::plan_scene_dsmc(s, run_options(*o))) setups.push_back(std::move(d));
         scenes.push_back(std::move(s));
       } catch (const std::exception& e) {

@@ -1,6 +1,6 @@
 // granmix dsmc SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
 //   [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS]
-//   -> DIR/<scene>/dsmc.tsv with mean and standard-error columns (design.md §3–4), and an
+//   -> DIR/<scene>/dsmc.tsv with mean and standard-error columns (docs/architecture.md §3–4), and an
 //   end-of-run summary on stdout; a progress line on stderr (compare/scheduler.hpp).
 #include <sys/resource.h>
 #include <unistd.h>
@@ -17,6 +17,7 @@
 #include "scheduler.hpp"
 #include "model/sha256.hpp"
 #include "tsv_writer.hpp"
+#include "theory/scene_theory.hpp"
 
 namespace granmix::compare {
 
@@ -32,7 +33,7 @@ struct DsmcOptions {
 int run(const DsmcOptions& o) {
   interrupts::install();
   interrupts::require_writable_folder(o.out);
-  const model::Scene s = model::load_scene(o.scene);
+  const model::Scene s = theory::load_scene(o.scene);
   dsmc::RunOptions opt;
   opt.fidelity = o.fidelity, opt.seed = o.seed, opt.threads = o.threads;
   std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, opt);

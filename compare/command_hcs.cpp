@@ -1,24 +1,24 @@
-// granmix hcs: the settled (HCS) state of a mixture (design.md §3), in two forms:
+// granmix hcs: the settled (HCS) state of a mixture (docs/architecture.md §3), in two forms:
 //   --mass m1,m2,… --diameter … --density … --eps E [--nstar N] [--json]
 //   --mu μ --delta δ --w w --alpha α [--alpha11 --alpha22 --alpha12] [--nstar N] [--json]
 // Fields: T_ratio_maxwell (v1 Eq. A2), T_ratio_sonine and c (first-Sonine, MG App. A, any number of
 // species), D_ratio (v1 Eq. 19), tail_exponent 2β_k/ζ* (MG Eqs. 20, 30), D_sonine2_factor = D_k[2]/D_k[1]
-// (second-Sonine tracer diffusion at the settled Maxwellian ratios, physics-beyond.md §3) and
+// (second-Sonine tracer diffusion at the settled Maxwellian ratios, docs/physics-beyond.md §3) and
 // D_sonine_factors = [D_k[1]/D_k[1], …, D_k[5]/D_k[1]] (the Sonine orders 1–5, up to the first without a
 // diffusive solution; the kinetic level uses order 4), D_converged_factor = D_k/D_k[1] of the same tracer problem
 // solved without the Sonine truncation and D_converged_change, its change from one basis function fewer
-// (theory/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~1 ms per species and partner),
+// (theory/grid/tracer_diffusion_galerkin.hpp; up to max_converged_species species, ~1 ms per species and partner),
 // T_ratio_tracer_converged (binaries: species 2 as an intruder in species 1's own HCS, its stationary distribution
-// without the Sonine truncation on a speed grid, theory/tracer_temperature.hpp) and T_ratio_tracer_converged_change
+// without the Sonine truncation on a speed grid, theory/grid/tracer_temperature.hpp) and T_ratio_tracer_converged_change
 // (the grid's own estimate: a step 3/2 as long), T_ratio_intruder_converged with its _change and
 // xi12_intruder_converged (the same at species 2's own density, its heating of species 1 self-consistent), tau0 = 2/ξ
 // at ⟨T⟩ = 1, zeta_star in MG units. With one constant restitution (--eps, or MG's --alpha) also the
-// one-species second Sonine HCS (theory/sonine_truncation.hpp), the computed truncation estimate of the
+// one-species second Sonine HCS (theory/sonine/sonine_truncation.hpp), the computed truncation estimate of the
 // first-Sonine c: for one species a2_sonine2, a3_sonine2 in its species object; for a mixture the top-level
 // "one_species_truncation" {eps, a2_sonine1, a2_sonine2, a3_sonine2, a3_given_a2_sonine1, a2_relative_change} of one species at
 // that ε (a proxy for near-equal species, not a mixture calculation). Fields that cannot be computed are
 // omitted, never filled. With --converged (up to max_converged_hcs_species species) also the HCS without the Sonine
-// truncation (theory/converged_hcs.hpp, ~1 s for a binary, ~4 s with its error estimate): per species
+// truncation (theory/grid/converged_hcs.hpp, ~1 s for a binary, ~4 s with its error estimate): per species
 // T_ratio_converged, c_converged, a3_converged; zeta_star_converged; converged_error {T_ratio, c} (the grid's and the
 // partners' truncation, summed: relative, the largest over the species) and converged_passes.
 #include <fmt/format.h>
@@ -33,13 +33,13 @@
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/converged_hcs.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/sonine_truncation.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/tracer_temperature.hpp"
+#include "theory/grid/converged_hcs.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/sonine/sonine_truncation.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
+#include "theory/grid/tracer_temperature.hpp"
 
 namespace granmix::compare {
 
@@ -126,7 +126,7 @@ int run(const HcsOptions& o) {
       if (std::isfinite(converged[k])) change[k] = theory::converged_diffusion_change(c);
     }
   // A binary's species 2 as a tracer (NaN where its stationary problem has no solution).
-  // And at its own density, its heating of species 1 included (theory/tracer_temperature.hpp).
+  // And at its own density, its heating of species 1 included (theory/grid/tracer_temperature.hpp).
   theory::TracerTemperature tracer, intruder;
   if (mix.size() == 2) {
     try {
@@ -135,7 +135,7 @@ int run(const HcsOptions& o) {
     } catch (const NumericalError&) {  // the grid or the gas's rate did not settle: omitted
     }
   }
-  // The HCS without the Sonine truncation, on request (theory/converged_hcs.hpp).
+  // The HCS without the Sonine truncation, on request (theory/grid/converged_hcs.hpp).
   std::optional<theory::ConvergedHcs> grid;
   if (o.converged) {
     require(mix.size() <= max_converged_hcs_species, "--converged: at most " + std::to_string(max_converged_hcs_species) + " species (N² speed grids per pass; " +
@@ -147,7 +147,7 @@ int run(const HcsOptions& o) {
   std::optional<theory::SonineTruncation> trunc;
   if (eps_one >= 0) trunc = theory::sonine_truncation(eps_one);
   if (o.json) {
-    nlohmann::ordered_json j;  // keys in the order of design.md §3
+    nlohmann::ordered_json j;  // keys in the order of docs/architecture.md §3
     j["species"] = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < mix.size(); ++k) {
       nlohmann::ordered_json s{{"T_ratio_maxwell", d.T[k] / d.T[0]},

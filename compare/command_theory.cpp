@@ -1,7 +1,7 @@
-// granmix theory SCENE.toml [--out DIR]  ->  DIR/<scene>/theory.tsv (design.md §3–4).
-// --level NAME: one theory level's curves alone (any level theory_level.hpp names, e.g. kinetic-sonine3 or
-// kinetic-cooling3-shaped, kinetic-converged, also those a scene may not judge) -> DIR/<scene>/theory_<NAME>.tsv, to compute a
-// model error from any next order by hand (README, "How far the computed bounds can be tightened").
+// granmix theory SCENE.toml [--out DIR]  ->  DIR/<scene>/theory.tsv (docs/architecture.md §3–4).
+// --level NAME: one theory level's curves alone (any level of the catalogue, `granmix levels --all`, also those a scene
+// may not judge) -> DIR/<scene>/theory_<NAME>.tsv, to compute a model error from any next order by hand
+// (docs/judging.md, "How far the computed bounds can be tightened").
 #include <cstdio>
 #include <filesystem>
 
@@ -12,7 +12,7 @@
 #include "model/sha256.hpp"
 #include "model/errors.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -24,12 +24,12 @@ std::function<int()> add_theory_command(CLI::App& app) {
   auto level = std::make_shared<std::string>();  // empty: the scene's own level and companions -> theory.tsv
   cmd->add_option("scene", *scene, "scene file (TOML)")->required();
   cmd->add_option("--out", *out, "output folder")->capture_default_str();
-  cmd->add_option("--level", *level, "one level's curves alone -> theory_<level>.tsv (paper, kinetic, kinetic-sonineN, kinetic-cooling3, ...)");
+  cmd->add_option("--level", *level, "one level's curves alone -> theory_<level>.tsv; one of: " + theory::level_catalogue().names());
   return [scene, out, level]() {
     // Everything is read and checked before anything is written.
-    const model::Scene s = model::load_scene(*scene);
+    const model::Scene s = theory::load_scene(*scene);
     if (!level->empty()) try {
-        theory::make_theory_level(*level);
+        theory::find_level(*level);
       } catch (const std::invalid_argument& e) {
         throw InputError(std::string("--level: ") + e.what());
       }

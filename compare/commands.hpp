@@ -1,5 +1,5 @@
 #pragma once
-// The subcommands of `granmix` (design.md §3). Each registers its options on the CLI11 app and
+// The subcommands of `granmix` (docs/architecture.md §3). Each registers its options on the CLI11 app and
 // returns the process exit code: 0 success, 1 comparison failed, 2 bad input, 3 numerical failure.
 #include <CLI/CLI.hpp>
 
@@ -23,5 +23,7 @@ std::function<int()> add_dsmc_command(CLI::App& app);
 std::function<int()> add_compare_command(CLI::App& app);
 std::function<int()> add_validate_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
+std::function<int()> add_levels_command(CLI::App& app);
+std::function<int()> add_observables_command(CLI::App& app);
 
 }  // namespace granmix::compare

@@ -43,7 +43,7 @@ std::string tolerance_text(const model::CompareQuantity& q) {
 
 nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
   nlohmann::ordered_json j = {{"relative", q.relative}, {"z", q.z}};
-  // One lower level as a string (as before), several as an array.
+  // One lower level as a string, several as an array.
   if (q.correction_from.size() == 1) j["correction_from"] = q.correction_from.front();
   if (q.correction_from.size() > 1) j["correction_from"] = q.correction_from;
   if (!q.error_column.empty()) j["error_column"] = q.error_column;

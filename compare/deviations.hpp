@@ -1,5 +1,5 @@
 #pragma once
-// Theory against DSMC, point by point (design.md §3): for every compared quantity and every
+// Theory against DSMC, point by point (docs/architecture.md §3): for every compared quantity and every
 // (t or x, species) row present in both tables, rel = (dsmc − theory)/|theory| and z = (dsmc − theory)/err.
 // A judged point passes when |dsmc − theory| <= relative |theory| + z_tol err (model error plus
 // statistical error), or <= absolute. Where theory.tsv also holds the paper level's value

@@ -1,5 +1,5 @@
 #pragma once
-// The figure of a scene (design.md §3): <scene>.gp written beside theory.tsv and dsmc.tsv, using
+// The figure of a scene (docs/architecture.md §3): <scene>.gp written beside theory.tsv and dsmc.tsv, using
 // plots/style.gp; rendered to <scene>.png (pngcairo) and <scene>.pdf (pdfcairo) when gnuplot is
 // installed. Theory as lines, DSMC as symbols with error bars, guide slopes dashed.
 #include <filesystem>

@@ -1,5 +1,5 @@
 #pragma once
-// out/index.html of a validation run (issue 11): the summary table (the rows of summary.tsv), then per
+// out/index.html of a validation run: the summary table (the rows of summary.tsv), then per
 // scene its title and paper source, its figure beside every judged quantity's tolerance and `why`,
 // and links to its files. Static HTML with inline CSS, no JavaScript. It is built from what the run
 // wrote (summary.json and each scene's report.json), so it shows exactly what those files say and

@@ -89,7 +89,7 @@ void require_writable_folder(const std::filesystem::path& out) {
   if (!missing.empty() && !std::filesystem::create_directories(abs, ec) && ec) fail("cannot create the folder: " + ec.message());
   const std::filesystem::path probe = abs / (".granmix-probe-" + std::to_string(getpid()));
   // Under mpirun every rank checks --out at once, and a rank that created the folder removes it again after its probe
-  // (below): another rank's probe can then meet ENOENT (seen once in ctest under load, 2026-12-05). Create and retry.
+  // (below): another rank's probe can then meet ENOENT (seen in ctest under load). Create and retry.
   std::FILE* f = nullptr;
   int err = 0;
   for (int attempt = 0; attempt < 8 && f == nullptr; ++attempt) {

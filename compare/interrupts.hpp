@@ -1,5 +1,5 @@
 #pragma once
-// SIGINT/SIGTERM during `granmix dsmc|compare|validate` (issue 15): the run stops with exit 130/143,
+// SIGINT/SIGTERM during `granmix dsmc|compare|validate`: the run stops with exit 130/143,
 // one line on stderr saying what was finished, and no partial output: the staging folder of the scene
 // in progress and any output folder this run created empty are removed. Signals are taken by a
 // watcher thread (sigwait), not an async handler, so the clean-up may use the file system freely;

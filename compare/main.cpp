@@ -1,5 +1,5 @@
 // granmix — kinetic theory of freely cooling granular gas mixtures side by side with DSMC.
-// Command line of design.md §3. Exit codes: 0 success, 1 a comparison failed its tolerance,
+// Command line of docs/architecture.md §3. Exit codes: 0 success, 1 a comparison failed its tolerance,
 // 2 bad input or usage, 3 numerical failure.
 #include <CLI/CLI.hpp>
 
@@ -29,6 +29,8 @@ int main(int argc, char** argv) {
   actions["compare"] = compare::add_compare_command(app);
   actions["validate"] = compare::add_validate_command(app);
   actions["bench"] = compare::add_bench_command(app);
+  actions["levels"] = compare::add_levels_command(app);
+  actions["observables"] = compare::add_observables_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -1,5 +1,5 @@
 #pragma once
-// The '#' lines every output file starts with (design.md §4): granmix version and git SHA, scene
+// The '#' lines every output file starts with (docs/architecture.md §4): granmix version and git SHA, scene
 // name and SHA-256, seed, fidelity, date, command.
 #include <string>
 

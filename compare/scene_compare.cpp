@@ -11,7 +11,7 @@
 #include "gnuplot_figure.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
-#include "theory/galerkin_decay.hpp"
+#include "theory/grid/galerkin_decay.hpp"
 #include "theory/scene_theory.hpp"
 #include "interrupts.hpp"
 #include "tsv_writer.hpp"
@@ -86,7 +86,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     const auto tables = std::make_shared<theory::GalerkinPairTables>();  // the converged levels' pair tables, built once
     const theory::TheoryResult th = theory::run_theory(s, tables);
     o.theory_seconds = th.seconds;
-    if (theory::theory_uses_rtol(s)) {  // error estimate: the same scene at 100× tighter tolerance (design: speed against error), on the same tables
+    if (theory::theory_uses_rtol(s)) {  // error estimate: the same scene at 100× tighter tolerance (speed against error: docs/performance.md), on the same tables
       model::Scene tight = s;
       tight.theory.rtol = std::max(1e-14, s.theory.rtol / 100.0);
       o.theory_error = max_relative_difference(th.table, theory::run_theory(tight, tables).table);

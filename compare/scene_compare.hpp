@@ -1,5 +1,5 @@
 #pragma once
-// One scene compared end to end (design.md §3): theory (and its error estimate from a rerun at
+// One scene compared end to end (docs/architecture.md §3): theory (and its error estimate from a rerun at
 // 100× tighter tolerance), DSMC, deviations, report.json and the figure, written to a temporary
 // folder beside DIR/<scene> and renamed into place only when complete.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The one place MPI lives (issue 14). A command's DSMC work is cut into units — one replica of one
+// The one place MPI lives (docs/user-guide.md, "Cluster scale"). A command's DSMC work is cut into units — one replica of one
 // ensemble (a scene, or one point of a sweep) — listed identically on every rank, sorted longest
 // first by their estimated collisions (dsmc/unit_cost.hpp), and handed out one at a time by rank 0 to
 // whichever thread of whichever rank asks next. Rank 0 gathers every record; the command then builds

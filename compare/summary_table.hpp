@@ -1,5 +1,5 @@
 #pragma once
-// The per-quantity summary lines of `granmix compare` and `granmix validate` (design.md §3): scene,
+// The per-quantity summary lines of `granmix compare` and `granmix validate` (docs/architecture.md §3): scene,
 // quantity, max rel, max z, tolerance, pass, theory seconds (error estimate), DSMC seconds,
 // collisions per second; and summary.tsv / summary.json for a validation run.
 #include <filesystem>

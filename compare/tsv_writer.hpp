@@ -1,5 +1,5 @@
 #pragma once
-// TSV files of design.md §4: provenance '#' lines, ONE uncommented header line of column names,
+// TSV files of docs/architecture.md §4: provenance '#' lines, ONE uncommented header line of column names,
 // then tab-separated numbers in shortest round-trip form (full double precision; NaN as "nan").
 // Files are written to a temporary name in the same folder and renamed: never half-written.
 #include <filesystem>

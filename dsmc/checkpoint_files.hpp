@@ -1,5 +1,5 @@
 #pragma once
-// The checkpoint folder of a run (issue 14): <dir>/<unit_key>.r<r>.snap, the latest snapshot of
+// The checkpoint folder of a run: <dir>/<unit_key>.r<r>.snap, the latest snapshot of
 // replica r in flight, and <dir>/<unit_key>.r<r>.done, its record once finished (the .snap is then
 // removed). Files are written atomically (a hidden temporary in the same folder, then rename), so a
 // kill leaves either the previous file or the new one.

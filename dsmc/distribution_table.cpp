@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "theory/scene_theory.hpp"
-#include "theory/shell_average.hpp"
-#include "theory/sonine_hcs.hpp"
+#include "theory/numerics/shell_average.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
 
 namespace granmix::dsmc {
 
@@ -41,7 +41,7 @@ model::Table settled_distribution_table(const model::Scene& s, const DsmcSetup& 
     const double lo = b * width, hi = lo + width, v = 0.5 * (lo + hi);
     for (std::size_t k = 0; k < M; ++k) {
       // Δ = (2/c)(Φ/Φ_M − 1) with the simulation's own c_k and λ_k; the bin's Maxwellian is its shell
-      // average, as the histogram's Φ is (theory/shell_average.hpp). Jackknife error: Φ, c and λ come
+      // average, as the histogram's Φ is (theory/numerics/shell_average.hpp). Jackknife error: Φ, c and λ come
       // from the same replicas.
       const auto delta = jackknife(R, [&](std::size_t skip) {
         const double l = lambda(k, skip);

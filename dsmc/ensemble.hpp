@@ -27,7 +27,7 @@ class ReplicaSource {
 };
 
 // Snapshots of replicas in flight, written into `dir` every `every_seconds` of wall time, and resumed
-// from there (issue 14: a run killed by a batch queue loses at most one interval).
+// from there (a run killed by a batch queue loses at most one interval).
 // Each replica snapshots at the first refresh point after every_seconds of its own wall time (0: at
 // every refresh point, for tests); wall time decides only when, never what (dsmc/replica_run.cpp).
 struct Checkpointing {
@@ -55,7 +55,7 @@ struct DsmcSetup {
   // clock, displacements and collision counts are reset and the measurement begins.
   bool aged = false;
   double time_step_factor = 3e-3;  // timestep method: Δt = factor λ11/v01(t) (MG Sec. 3)
-  // Time-averaged MSD (physics.md §4) of `tamsd_tracers` particles per species over [0, 𝒯]: for
+  // Time-averaged MSD (docs/physics.md §4) of `tamsd_tracers` particles per species over [0, 𝒯]: for
   // each lag, [R(t+Δ) − R(t)]² averaged over the tracers and, with trapezoid weights, over 512 start
   // times t <= 𝒯 − Δ (0 and a geometric grid from 1e-6 𝒯: the early, fast-cooling times need them).
   double tamsd_measurement_time = 0.0;  // 𝒯; 0: no TAMSD
@@ -70,7 +70,7 @@ struct DsmcSetup {
   bool distribution_time_average = false;
   // Speed classes per species for the direct and low-rank majorants (dsmc/speed_classes.hpp); 1 is
   // the paper's per-species vmax. TAMSD runs use 1: classes reorder particles, tracers need identity.
-  // 3 was the fastest of 1–8 on the 691-species system (speed_classes.cpp).
+  // 3 is the fastest of 1–8 on the 691-species system (speed_classes.cpp).
   std::size_t speed_classes = 3;
   std::uint64_t seed = 1;
   std::size_t replicas = 1;

@@ -1,6 +1,6 @@
 #pragma once
 // The one event-driven DSMC loop, exact in time (no time step), parameterised at compile time by
-// the pair selector so that its proposal inlines (design.md §5). Steps (v1 Sec. II B, made exact
+// the pair selector so that its proposal inlines (docs/architecture.md §5). Steps (v1 Sec. II B, made exact
 // for any selector): waiting time from the total majorant rate; a proposed pair; acceptance
 // |g|/scale; direction e from the |g·e|-weighted hemisphere; ε at |g·e|; the collision.
 #include <algorithm>
@@ -124,7 +124,7 @@ class EventLoop {
       if (species1) ts_ = rescaled_time(), t_e1_ = t_, e1_ -= species1_energy(q);
       collide(p_, q.a, q.b, ma, mb, eps, e, g_dot_e, t_);
       if (species1) e1_ += species1_energy(q);
-      energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // physics.md §1
+      energy_ -= (1.0 - eps * eps) * (ma * mb / (ma + mb)) * g_dot_e * g_dot_e / 2.0;  // docs/physics.md §1
       c_.count(q.i, q.k);
       std::size_t b = q.b;  // kept on its particle while a moves between speed classes
       const bool moved_a = sel_.moved(q.a, q.i, b, p_);
@@ -147,7 +147,7 @@ class EventLoop {
   }
 
   // Physics check at every refresh: the particles must carry the energy that the collisions' losses
-  // (1−ε²) m_eff (g·e)²/2 (physics.md §1) left them, up to rounding. A collision rule that breaks
+  // (1−ε²) m_eff (g·e)²/2 (docs/physics.md §1) left them, up to rounding. A collision rule that breaks
   // momentum or the restitution law stops the run here instead of running on (a rule that gains
   // energy from ε ≤ 1 heats the gas without bound: the run to t_stop would never end). Rounding bound:
   // each bookkeeping step and each velocity update errs by at most a few ε_mach of the energy, and the

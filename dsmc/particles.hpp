@@ -20,10 +20,10 @@
 // n u max|R0_e|, and, the roundings being unbiased and uncorrelated, to u √(n/3) max|R0_e| rms
 // (1e5 updates: 1.1e-5 of the displacement scale per particle; the MSD, an average over particles of
 // R² whose errors are of either sign, moves by far less: 2e-10 against the double intercept, measured). The read-out R0_e + v (t − t_e) is in double. A float intercept anchored at
-// t = 0 instead (R0 = R − v t, the former double layout) would carry u |v| t per update: in an elastic
+// t = 0 instead (R0 = R − v t) would carry u |v| t per update: in an elastic
 // gas at 1e5 collision times |v| t is ~300 times the displacement (tests/dsmc/test_displacement_float.cpp).
-// Memory: 24 bytes per particle, 36 with displacements (was 48 with a double intercept, 56 with R
-// and t_last stored).
+// Memory: 24 bytes per particle, 36 with displacements (a double intercept would take 48, R and t_last
+// stored 56).
 #include <cstddef>
 #include <vector>
 
@@ -57,7 +57,7 @@ struct Particles {
 };
 
 // Maxwellian velocities at T_k per species; each species' centre-of-mass velocity removed, then
-// (if rescale) scaled so the species has exactly T_k (physics.md §7: remove the CM velocity first).
+// (if rescale) scaled so the species has exactly T_k (docs/physics.md §7: remove the CM velocity first).
 Particles maxwellian_particles(const model::Mixture& mix, const std::vector<std::size_t>& counts,
                                const std::vector<double>& T, bool track_displacement, bool rescale, Rng& rng);
 

@@ -38,7 +38,7 @@ void sample(const Particles& p, double t, const DsmcSetup& s, const Counters& c,
     const double n = double(p.count(k));
     out.T.push_back(p.mass[k] * v2 / (3.0 * n));
     if (s.msd) out.msd.push_back(r2 / n);
-    // c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (physics.md §6: c = 2a₂).
+    // c = 2[(3/5)⟨v⁴⟩/⟨v²⟩² − 1] (docs/physics.md §6: c = 2a₂).
     if (s.cumulant) out.cumulant.push_back(2.0 * (0.6 * (v4 / n) / ((v2 / n) * (v2 / n)) - 1.0));
   }
   for (std::uint64_t v : c.species_collisions) out.species_collisions.push_back(double(v));
@@ -84,7 +84,7 @@ std::vector<double> tamsd_starts(const DsmcSetup& s, std::size_t n) {
   return t;
 }
 
-// Trapezoid weights for lag l: the time average over [0, 𝒯 − Δ] of physics.md §4 as a quadrature on the grid's starts
+// Trapezoid weights for lag l: the time average over [0, 𝒯 − Δ] of docs/physics.md §4 as a quadrature on the grid's starts
 // below 𝒯 − Δ and the lag's own start there (the grid's n first starts, then one per lag). Without that last start the
 // average stopped at the grid's last start below 𝒯 − Δ while the theory's runs to 𝒯 − Δ: on v2 Fig. 5 the DSMC's TAMSD
 // came out 2.7% high at short lags (a span 9733 for 9999.99, the increments there negligible).

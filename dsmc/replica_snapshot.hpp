@@ -1,5 +1,5 @@
 #pragma once
-// The checkpoint files of one replica (issue 14), in a versioned, endian-tagged binary form:
+// The checkpoint files of one replica, in a versioned, endian-tagged binary form:
 //   magic (8 bytes: "GRANMIXS" snapshot of a replica in flight, "GRANMIXD" finished replica),
 //   format version (u32), endian tag (u32 0x01020304 as written), then the identity (granmix
 //   version, scene SHA-256, unit key, replica index), the payload, and the SHA-256 of all bytes

@@ -1,6 +1,6 @@
 #pragma once
 // Random streams of the DSMC: one pcg64 stream per replica, derived from (master seed, replica),
-// so results are identical for any number of threads (design.md §5). The distributions are
+// so results are identical for any number of threads (docs/architecture.md §5). The distributions are
 // written here, not taken from <random>, so that a stream gives the same numbers with every
 // standard library.
 #include <pcg_random.hpp>
@@ -70,7 +70,7 @@ class Rng {
   // Exponential waiting time of a Poisson process of the given rate.
   double exponential(double rate) { return -std::log(uniform_open0()) / rate; }
   // Exponential of mean 1 by Marsaglia & Tsang's ziggurat (J. Stat. Softw. 5(8), 2000), 256 layers:
-  // 98.9% of draws cost one random word, two table loads and a multiply, without the log that was
+  // 98.9% of draws cost one random word, two table loads and a multiply, without the log, which takes
   // 5% of the event loop in perf. Layer i: the low 8 bits; the point in it: the high 53 bits.
   double standard_exponential() {
     const ExpZiggurat& z = exp_ziggurat;

@@ -7,9 +7,9 @@
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "model/sha256.hpp"
-#include "theory/initial_state.hpp"
+#include "theory/histories/initial_state.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/levels/level_catalogue.hpp"
 
 namespace granmix::dsmc {
 

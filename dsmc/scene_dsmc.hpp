@@ -1,5 +1,5 @@
 #pragma once
-// The DSMC curves a scene asks for (design.md §4): T, msd, c, gamma and collisions with their
+// The DSMC curves a scene asks for (docs/architecture.md §4): T, msd, c, gamma and collisions with their
 // standard errors over replicas, in the long form of theory.tsv (species 0: ⟨T⟩, total MSD,
 // γ = T_1/T_2, collisions per particle of the whole system).
 #include <cstdint>
@@ -22,7 +22,7 @@ struct DsmcRun {
 
 // How a scene's DSMC runs: fidelity "quick" or "paper" (particles, replicas of the scene's [dsmc]),
 // master seed, threads; replicas already computed by other
-// MPI ranks (source) and checkpointing (issue 14), both optional.
+// MPI ranks (source) and checkpointing, both optional.
 struct RunOptions {
   std::string fidelity = "quick";
   std::uint64_t seed = 1;

@@ -1,8 +1,8 @@
 #pragma once
-// Pair selectors of the exact event-driven DSMC (design.md §5). Each proposes an ordered pair of
+// Pair selectors of the exact event-driven DSMC (docs/architecture.md §5). Each proposes an ordered pair of
 // particles (a, b) of species (i, k) from a majorant process of total rate total_rate(), and a
 // scale and weight such that accepting with probability weight·|g|/scale gives every unordered pair
-// {a, b} its true collision rate π σ_ik² χ_ik |g| / V (physics.md §1).
+// {a, b} its true collision rate π σ_ik² χ_ik |g| / V (docs/physics.md §1).
 //
 // Normalisation (v1 Eq. 12 as printed drops N_i N_k; derived here): proposing the ordered pair (a,b)
 // with rate π σ_ik² χ̂ vmax_i / V, the unordered pair is proposed at π σ_ik² χ̂ (vmax_i + vmax_k)/V,
@@ -205,7 +205,7 @@ class BirdSelector {
 };
 
 // Bird's method with one global bound σ_max² χ_max 2 vmax for every pair, particles drawn uniformly
-// from the whole system (`bird-global`; what `bird` was up to issue 13): the textbook majorant,
+// from the whole system (`bird-global`): the textbook majorant,
 // kept to show what the per-particle bound of BirdSelector gains.
 class GlobalBirdSelector {
  public:

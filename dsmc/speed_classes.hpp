@@ -1,8 +1,7 @@
 #pragma once
 // Speed classes: the particles of each species kept ordered by speed class, so that a selector's
-// majorant can use the bound of a particle's class instead of the species' maximum speed (issue 6:
-// "tighter majorants, bucket particles by speed within a species while keeping the low-rank
-// structure"). Class c of species k holds indices [begin(u), end(u)), u = k·C + c, with speeds up to
+// majorant can use the bound of a particle's class instead of the species' maximum speed, keeping
+// the low-rank structure. Class c of species k holds indices [begin(u), end(u)), u = k·C + c, with speeds up to
 // bound(u): geometric bounds top·r^(C−1−c) below the top class, whose bound is the species' maximum
 // speed (raised when exceeded, like the paper's vmax). An ordered pair (a, b) proposed at a rate
 // ∝ bound(class(a)) gives the unordered pair σ²(bound_a + bound_b) ≥ σ²(|v_a| + |v_b|) ≥ σ²|g|: the
@@ -38,7 +37,7 @@ class SpeedClasses {
   // Σ_c N_u bound_u over the classes of species k: the species' weight in a two-level selection
   // (species from a tree over M leaves, then its class by pick()), so the tree keeps M leaves, not M·C.
   // Kept with the class weights N_u bound_u, renewed when a count or bound changes (callgrind: computing
-  // them per proposal was a fifth of its instructions).
+  // them per proposal would be a fifth of its instructions).
   double weight(std::size_t k) const { return species_weight_[k]; }
   // The class of species k with probability N_u bound_u / weight(k), for x uniform in [0, weight(k)).
   // The top class is never empty while weight(k) > 0 (it holds the fastest particle and only gains

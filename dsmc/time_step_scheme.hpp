@@ -5,7 +5,7 @@
 // fractional part carried to the next step) are drawn uniformly; with σ̂ uniform on the sphere a
 // pair collides with probability Θ(g·σ̂) ω/ω_max, ω = 4π σ_ij² n_j χ_ij |g·σ̂|. Summed over both
 // orderings that is N_i ν_ij Δt collisions per step; velocities are frozen within a step, which is
-// the scheme's O(Δt) error (physics.md §7: it biases the cumulants).
+// the scheme's O(Δt) error (docs/physics.md §7: it biases the cumulants).
 #include <cstdint>
 #include <functional>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// The two kinds of failure the command line maps to exit codes (design.md §3):
+// The two kinds of failure the command line maps to exit codes (docs/architecture.md §3):
 // InputError -> 2 (bad scene or command line), NumericalError -> 3 (a solver failed).
 #include <stdexcept>
 #include <string>

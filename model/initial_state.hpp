@@ -1,5 +1,5 @@
 #pragma once
-// What a scene says about the initial temperatures (theory/initial_state.hpp computes them):
+// What a scene says about the initial temperatures (theory/histories/initial_state.hpp computes them):
 //   equal    all T_k = 1
 //   hcs      settled ratios with ⟨T⟩ = 1
 //   aged     equal T_k = T_hot, cooled until ⟨T⟩ = 1 (v1 Fig. 3 dashed lines)

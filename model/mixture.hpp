@@ -12,7 +12,7 @@ struct Species {
   double density = 0.1;  // number density n_k = N_k / V
 };
 
-// Any number N >= 1 of species; pair quantities follow physics.md (σ_ki = (σ_k+σ_i)/2).
+// Any number N >= 1 of species; pair quantities follow docs/physics.md (σ_ki = (σ_k+σ_i)/2).
 class Mixture {
  public:
   explicit Mixture(std::vector<Species> species);

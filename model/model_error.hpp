@@ -1,5 +1,5 @@
 #pragma once
-// The judged theory's computed model error at a point of its table (README "tolerances", design.md §4): the quantity's
+// The judged theory's computed model error at a point of its table (docs/judging.md, "tolerances", docs/architecture.md §4): the quantity's
 // `relative`, plus the largest |theory − theory_<c>|/|theory| over its `correction_from` columns c (the corrections of
 // independent truncations: the largest), plus its `error_column` there (the level's own computed part). One place for
 // it: compare (deviations.cpp: the tolerance of each judged point) and bench (`granmix bench theory`: each level's

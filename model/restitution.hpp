@@ -1,7 +1,7 @@
 #pragma once
 // Restitution law of every species pair: constant (scalar or per-pair matrix ε_ki) or
 // viscoelastic (v1 Eq. 5), with Aκ^(2/5) given for the 1–1 pair and scaled per pair through
-// κ_ki ∝ √σ_eff / m_eff (v1 Eq. 7; physics.md §5).
+// κ_ki ∝ √σ_eff / m_eff (v1 Eq. 7; docs/physics.md §5).
 #include <cstddef>
 #include <vector>
 

@@ -10,6 +10,7 @@
 #include "enskog.hpp"
 #include "errors.hpp"
 #include "mixture_generators.hpp"
+#include "observable_catalogue.hpp"
 #include "toml_fields.hpp"
 
 namespace granmix::model {
@@ -183,15 +184,18 @@ Observables read_observables(TomlFields& f) {
     o.tamsd_tracers = t.count("tracers", 1, 100000, 100);
     t.finish();
   }
-  if (!(o.temperatures || o.needs_msd() || o.rescaled_time || o.d_ratio || o.gamma || o.tamsd || o.cumulant || o.distribution_bins))
-    f.fail("temperatures", "the scene asks for no observable", "temperatures, msd, msd_ratio, rescaled_time, d_ratio, gamma, tamsd, cumulant");
+  const auto& all = observable_catalogue();
+  if (std::none_of(all.begin(), all.end(), [&](const ObservableDescriptor& d) { return d.asked(o); })) {
+    std::string keys;
+    for (const std::string& k : observable_keys()) keys += (keys.empty() ? "" : ", ") + k;
+    f.fail("temperatures", "the scene asks for no observable", keys);
+  }
   return o;
 }
 
-TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
+TheorySettings read_theory(TomlFields& f, const Mixture& mix, const LevelRules& levels) {
   TheorySettings s;
-  s.level = f.choice("level", {"paper", "kinetic", "kinetic-cooling3", "kinetic-cooling3-shaped", "kinetic-hcs-converged", "kinetic-converged", "kinetic-converged-cooling3", "kinetic-converged-hcs", "kinetic-converged-grid"},
-                     "paper");
+  s.level = f.choice("level", levels.scene_levels(), levels.default_level);
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
   // 1e-14: below it CVODE works at rounding level; 1e-3: above it no comparison means anything.
@@ -216,7 +220,7 @@ TheorySettings read_theory(TomlFields& f, const Mixture& mix) {
   return s;
 }
 
-void check_combinations(const Scene& s, TomlFields& top) {
+void check_combinations(const Scene& s, TomlFields& top, const LevelRules& levels) {
   const auto& o = s.observables;
   const bool settled_start = s.initial.kind == InitialState::Kind::hcs || s.theory.tracer;
   if (s.theory.sweep && (o.temperatures || o.needs_msd() || o.rescaled_time || o.tamsd || o.distribution_bins))
@@ -227,17 +231,9 @@ void check_combinations(const Scene& s, TomlFields& top) {
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
-  if (s.theory.level == "kinetic-converged-hcs" && !s.theory.sweep)
-    top.fail("theory", "level \"kinetic-converged-hcs\" is the settled state of a sweep (the converged HCS has no history in time)",
-             "theory.sweep with level = \"kinetic-converged-hcs\", or level = \"kinetic-converged\"");
-  // The speed-grid history (theory/speed_grid_cooling.hpp) integrates every species' density with a constant ε.
-  if (s.theory.level.starts_with("kinetic-converged-grid") && (s.restitution.is_viscoelastic() || s.theory.sweep || s.theory.tracer))
-    top.fail("theory", "level \"" + s.theory.level + "\" integrates every species' density in time, which needs a constant restitution "
-             "coefficient and a history (no sweep, no tracer form)",
-             "collisions.restitution = number without sweep or tracer, or level = \"kinetic-converged-cooling3\"");
-  if (s.theory.level.starts_with("kinetic-converged") && s.theory.sweep && s.restitution.is_viscoelastic())
-    top.fail("theory", "level \"" + s.theory.level + "\" settles its memory for a sweep, which needs a constant restitution coefficient",
-             "collisions.restitution = number");
+  // The level's own refusals, as its catalogue entry declares them (theory/levels/level_catalogue.hpp).
+  for (const LevelCondition& c : levels.find(s.theory.level)->conditions)
+    if (c.violated_by(s)) top.fail("theory", c.what, c.allowed);
   if (s.theory.msd == "closed" && !settled_start)
     top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
   if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())
@@ -289,7 +285,7 @@ DsmcSettings read_dsmc(TomlFields& f) {
   return d;
 }
 
-std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
+std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species, const LevelRules& levels) {
   std::vector<CompareQuantity> out;
   const toml::node* n = f.node("quantities");
   const std::string allowed = "[{name = \"msd\", relative = 0.05, z = 4, species = [1, 2], t_min = 0, why = \"…\"}, …]";
@@ -298,12 +294,15 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
     if (!e.is_table()) f.fail_at(e, "quantities", "element is not a table", allowed);
     TomlFields q(*e.as_table(), f.file(), "compare.quantities[" + std::to_string(out.size() + 1) + "]");
     CompareQuantity c;
-    c.name = q.choice("name", {"T", "msd", "msd_ratio", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "t_s", "phi", "delta", "G"});
+    c.name = q.choice("name", observable_quantities());
     // Theory's prediction of exactly what the simulation measures, when the paper's quantity differs
     // (D_ratio: Eq. 19 against MSD increments -> D_ratio_increment).
     c.theory = q.has("theory") ? q.choice("theory", {"D_ratio_increment"}) : c.name;
-    c.correction_from = q.choices("correction_from", {"paper", "maxwell", "sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis", "knots", "rule", "partners", "domain"});
-    if (q.has("error_column")) c.error_column = q.choice("error_column", {"D_ratio_error", "phi_error", "delta_error"});
+    // "maxwell": the Maxwellian column of a Sonine quantity beside it (no level); the rest name companion levels.
+    std::vector<std::string> corrections{"maxwell"};
+    for (const CorrectionRule& r : levels.corrections) corrections.push_back(r.name);
+    c.correction_from = q.choices("correction_from", corrections);
+    if (q.has("error_column")) c.error_column = q.choice("error_column", levels.error_columns());
     c.relative = q.number("relative", 0.0, 10.0, 0.05);
     if (q.has("model_error_max")) {
       if (c.correction_from.empty() && c.error_column.empty())
@@ -324,10 +323,54 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species) {
   return out;
 }
 
+// The computed model errors a scene asks for, against what its level offers (model/level_rules.hpp): an error column
+// the level computes for that quantity, companions the level has, on a scene that gives them what they need.
+void check_companions(const Scene& s, TomlFields& t, const LevelRules& levels) {
+  const std::string& level = s.theory.level;
+  const LevelRule& rule = *levels.find(level);
+  auto quoted = [](const std::vector<std::string>& names, const char* joint) {
+    std::string out;
+    for (std::size_t i = 0; i < names.size(); ++i) out += (i == 0 ? "" : i + 1 == names.size() ? joint : ", ") + ("\"" + names[i] + "\"");
+    return out;
+  };
+  auto named = [](const std::vector<std::string>& names, const std::string& x) { return names.empty() || std::find(names.begin(), names.end(), x) != names.end(); };
+  for (const CompareQuantity& q : s.compare) {
+    if (q.error_column.empty()) continue;
+    const auto own = std::find_if(rule.error_columns.begin(), rule.error_columns.end(), [&](const ErrorColumnRule& e) { return e.column == q.error_column; });
+    if (own != rule.error_columns.end() && named(own->quantities, q.name)) continue;
+    std::string what, allowed;
+    for (const LevelRule& l : levels.levels)
+      for (const ErrorColumnRule& e : l.error_columns) {
+        if (e.column == q.error_column && what.empty()) what = e.what;
+        if (l.scene_may_choose) allowed += "error_column = \"" + e.column + "\" (" + quoted(e.quantities, " or ") + ") with theory.level = \"" + l.name + "\"; ";
+      }
+    t.fail("error_column", "\"" + q.error_column + "\" is " + what + ", but the quantity is \"" + q.name + "\" at theory.level \"" + level + "\"",
+           allowed + "or no error_column");
+  }
+  for (const CompareQuantity& q : s.compare)
+    for (const std::string& lower : q.correction_from) {
+      if (lower == "maxwell") continue;
+      const std::string is = "\"" + lower + "\" is " + levels.correction(lower)->what;
+      const std::vector<std::string> offering = levels.offering(lower);
+      const std::string elsewhere = "theory.level = " + (offering.empty() ? std::string("(none)") : quoted(offering, " or "));
+      const CompanionRule* c = rule.companion(lower);
+      if (c == nullptr) t.fail("correction_from", is + ", but theory.level is \"" + level + "\"", elsewhere);
+      if (c->needs_tracer && !s.theory.tracer)
+        t.fail("correction_from", is + ", but theory.level is \"" + level + "\" without theory.tracer", "theory.tracer = true, or " + elsewhere);
+      if (c->needs_settled_distribution && !s.observables.distribution_settled)
+        t.fail("correction_from", is + ", but theory.level is \"" + level + "\" without observables.distribution",
+               "observables.distribution = { settled = true, ... }");
+      if (c->needs_history_with_constant_restitution && (s.restitution.is_viscoelastic() || s.theory.sweep))
+        t.fail("correction_from", is + ", which needs a constant restitution coefficient and no sweep", "collisions.restitution = number, without sweep");
+      if (!named(c->quantities, q.name))
+        t.fail("correction_from", is + ", but the quantity is \"" + q.name + "\" at theory.level \"" + level + "\"", "name = " + quoted(c->quantities, " or "));
+    }
+}
+
 PlotSettings read_plot(TomlFields& f) {
   PlotSettings p;
   p.x = f.choice("x", {"t", "t_s", "eps", "density", "n_star", "lag", "v", "species"}, "t");
-  p.y = f.choice("y", {"msd", "msd_ratio", "T", "gamma", "gamma_ratio", "c", "D_ratio", "tamsd", "phi", "delta", "G"}, "msd");
+  p.y = f.choice("y", plotted_quantities(), "msd");
   p.logx = f.flag("logx", false);
   p.logy = f.flag("logy", false);
   p.maxwell = f.flag("maxwell", false);
@@ -359,9 +402,9 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) { return load_scene_text(read_file(path), path); }
+Scene load_scene(const std::string& path, const LevelRules& levels) { return load_scene_text(read_file(path), path, levels); }
 
-Scene load_scene_text(const std::string& text, const std::string& path) {
+Scene load_scene_text(const std::string& text, const std::string& path, const LevelRules& levels) {
   Scene s;
   s.file = path;
   s.text = text;
@@ -407,9 +450,11 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
   }
   if (top.has("theory")) {
     TomlFields t = top.sub("theory");
-    s.theory = read_theory(t, s.mixture);
+    s.theory = read_theory(t, s.mixture, levels);
     t.finish();
   }
+  else
+    s.theory.level = levels.default_level;
   if (top.has("dsmc")) {
     TomlFields t = top.sub("dsmc");
     s.dsmc = read_dsmc(t);
@@ -417,69 +462,10 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
   }
   if (top.has("compare")) {
     TomlFields t = top.sub("compare");
-    s.compare = read_compare(t, s.mixture.size());
+    s.compare = read_compare(t, s.mixture.size(), levels);
     t.finish();
     if (!s.dsmc.present) top.fail("compare", "comparing needs a [dsmc] table", "[dsmc] with quick and paper");
-    // The levels a correction is measured from, beside the judged one (theory/theory_level.hpp, companion_level).
-    const std::string& level = s.theory.level;
-    const bool cooling3 = level == "kinetic-cooling3" || level == "kinetic-cooling3-shaped";
-    const bool converged = level.starts_with("kinetic-converged");
-    for (const CompareQuantity& q : s.compare) {
-      if (q.error_column == "D_ratio_error" && (level != "kinetic-converged-hcs" || q.name != "D_ratio"))
-        t.fail("error_column", "\"D_ratio_error\" is the model error the level kinetic-converged-hcs computes for its D ratios, but the quantity is \"" +
-               q.name + "\" at theory.level \"" + level + "\"", "name = \"D_ratio\" with theory.level = \"kinetic-converged-hcs\", or no error_column");
-      // The settled distributions' grid error at the elastic limit (kinetic-hcs-converged): Φ's relative one serves Φ and
-      // G = weight · Φ; Δ has its own.
-      const bool phi_like = q.name == "phi" || q.name == "G";
-      if ((q.error_column == "phi_error" && (!phi_like || level != "kinetic-hcs-converged")) ||
-          (q.error_column == "delta_error" && (q.name != "delta" || level != "kinetic-hcs-converged")))
-        t.fail("error_column", "\"" + q.error_column + "\" is the grid error kinetic-hcs-converged computes for its settled distributions, but the quantity is \"" +
-               q.name + "\" at theory.level \"" + level + "\"", "error_column = \"phi_error\" (phi, G) or \"delta_error\" (delta) with theory.level = \"kinetic-hcs-converged\"");
-    }
-    for (const CompareQuantity& q : s.compare)
-      for (const std::string& lower : q.correction_from) {
-        if (lower == "paper" && level == "paper")
-          t.fail("correction_from", "\"paper\" is a lower level of the kinetic levels, but theory.level is \"paper\"",
-                 "theory.level = \"kinetic\" (or a kinetic variant), or correction_from = \"maxwell\"");
-        if (lower == "sonine1" && level != "kinetic" && level != "kinetic-cooling3")
-          t.fail("correction_from", "\"sonine1\" is the first-Sonine D of the kinetic level, but theory.level is \"" + level + "\"",
-                 "theory.level = \"kinetic\" or \"kinetic-cooling3\", or correction_from = \"paper\" or \"maxwell\"");
-        if (lower == "kinetic" && !cooling3 && !converged)
-          t.fail("correction_from", "\"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"" +
-                 level + "\"", "theory.level = \"kinetic-cooling3\" or \"kinetic-converged\", or correction_from = \"paper\"");
-        if ((lower == "converged" || lower == "sonine4" || lower == "grid") && level != "kinetic-converged-cooling3")
-          t.fail("correction_from", "\"" + lower + "\" is one truncation of the kinetic-converged-cooling3 level, but theory.level is \"" + level + "\"",
-                 "theory.level = \"kinetic-converged-cooling3\", or correction_from = \"paper\" or \"kinetic\"");
-        if (lower == "reshaped" && (!converged || level.ends_with("-reshaped") || !s.theory.tracer))
-          t.fail("correction_from", "\"reshaped\" is the gas's reshaping by the intruders in the tracer form of a kinetic-converged level, but theory.level is \"" +
-                 level + "\"" + (s.theory.tracer ? "" : " without theory.tracer"), "theory.level = \"kinetic-converged\" with theory.tracer = true");
-        if (lower == "a2" && level != "kinetic-converged-grid")
-          t.fail("correction_from", "\"a2\" is one computed part of the kinetic-converged-grid level's model error, but theory.level is \"" + level + "\"",
-                 "theory.level = \"kinetic-converged-grid\", or correction_from = \"paper\"");
-        if (lower == "basis" && level != "kinetic-converged-grid" && level != "kinetic-converged-cooling3")
-          t.fail("correction_from", "\"basis\" is the tracer problem's basis companion of a converged level, but theory.level is \"" + level + "\"",
-                 "theory.level = \"kinetic-converged-grid\" or \"kinetic-converged-cooling3\", or correction_from = \"paper\"");
-        if ((lower == "knots" || lower == "rule" || lower == "partners" || lower == "domain") && (level != "kinetic-hcs-converged" || !s.observables.distribution_settled))
-          t.fail("correction_from", "\"" + lower + "\" is one computed part of the kinetic-hcs-converged level's settled distributions, but theory.level is \"" +
-                 level + "\"" + (s.observables.distribution_settled ? "" : " without observables.distribution"),
-                 "theory.level = \"kinetic-hcs-converged\" with observables.distribution = { settled = true, ... }, or correction_from = \"paper\"");
-        // The speed-grid temperatures (level kinetic-converged-grid): constant ε, no sweep.
-        if (lower == "grid" && (s.restitution.is_viscoelastic() || s.theory.sweep))
-          t.fail("correction_from", "\"grid\" is the speed-grid temperature history, which needs a constant restitution coefficient and no sweep",
-                 "collisions.restitution = number, or correction_from = \"cooling4\"");
-        // The next Sonine order of the order-3 temperatures (a₄ relaxing too: level kinetic-cooling4, or
-        // kinetic-converged-cooling4 beside kinetic-converged-cooling3, whose MSDs then carry it too).
-        const bool order3 = level == "kinetic-cooling3" || level == "kinetic-converged-cooling3";
-        const bool cooling4_applies = (order3 && (q.name == "T" || q.name == "gamma")) ||
-                                      (level == "kinetic-converged-cooling3" && (q.name == "msd" || q.name == "msd_ratio"));
-        if (lower == "cooling4" && !cooling4_applies)
-          t.fail("correction_from", "\"cooling4\" is the next Sonine order of the order-3 temperatures, but the quantity is \"" + q.name +
-                 "\" at theory.level \"" + level + "\"",
-                 "name = \"T\" or \"gamma\" with theory.level = \"kinetic-cooling3\" or \"kinetic-converged-cooling3\" (there also \"msd\", \"msd_ratio\")");
-        if (lower == "cooling3" && level != "paper" && level != "kinetic" && level != "kinetic-converged")
-          t.fail("correction_from", "\"cooling3\" is the next Sonine order of the first-Sonine temperatures and HCS, but theory.level is \"" +
-                 level + "\"", "theory.level = \"paper\", \"kinetic\" or \"kinetic-converged\"");
-      }
+    check_companions(s, t, levels);
   }
   if (top.has("plot")) {
     TomlFields t = top.sub("plot");
@@ -492,7 +478,7 @@ Scene load_scene_text(const std::string& text, const std::string& path) {
     s.time_unit_mg = t.choice("unit", {"natural", "mg"}, "natural") == "mg";
     t.finish();
   }
-  check_combinations(s, top);
+  check_combinations(s, top, levels);
   top.finish();
   if (s.theory.sweep && !s.dsmc.at.empty()) {  // theory also at the simulated points (compared there)
     auto& v = s.theory.sweep->values;

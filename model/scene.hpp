@@ -1,6 +1,6 @@
 #pragma once
-// A scene: one figure or table of a paper (design.md §4). The schema is documented in
-// compare/scenes/README.md; load_scene() refuses anything else with file:line: key: message.
+// A scene: one figure or table of a paper (docs/architecture.md §4). The schema is documented in
+// docs/scenes.md; load_scene() refuses anything else with file:line: key: message.
 #include <cmath>
 #include <cstddef>
 #include <optional>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "initial_state.hpp"
+#include "level_rules.hpp"
 #include "mixture.hpp"
 #include "restitution.hpp"
 
@@ -42,10 +43,9 @@ struct Sweep {
 };
 
 struct TheorySettings {
-  // paper: the papers' closure (Maxwellian rates, the `msd` form, v1 Eq. 19 D); kinetic: the level
-  // beyond it (theory/theory_level.hpp). A kinetic scene's theory.tsv also holds the paper level's
-  // curves as `<column>_paper`.
-  std::string level = "paper";
+  // The theory level judged (docs/levels.md; the catalogue's default when the scene names none). A scene at
+  // any other level than the papers' also gets the paper level's curves in theory.tsv as `<column>_paper`.
+  std::string level;
   std::string msd = "eq17";        // eq17 | vacf | longtime | closed
   std::string moments = "auto";    // viscoelastic rates: auto | series | quadrature
   double rtol = 1e-11;             // CVODE relative tolerance
@@ -53,7 +53,7 @@ struct TheorySettings {
   std::optional<Sweep> sweep;      // settled quantities along a parameter
 };
 
-// [dsmc]: how to simulate the scene (design.md §4). Particles are a total, split over species in
+// [dsmc]: how to simulate the scene (docs/architecture.md §4). Particles are a total, split over species in
 // proportion to the number densities; one set per fidelity.
 struct DsmcFidelity {
   std::size_t particles = 0;
@@ -71,7 +71,7 @@ struct DsmcSettings {
   DsmcFidelity quick, paper;
 };
 
-// [compare]: which quantities are compared and with what tolerance (design.md §3–4). A point passes
+// [compare]: which quantities are compared and with what tolerance (docs/architecture.md §3–4). A point passes
 // when |dsmc − theory| <= relative |theory| + z · dsmc_err, or <= absolute: `relative` is the judged
 // theory's computed model error, z · dsmc_err the statistical part (the two add: a point can carry
 // both); `species` and `t_min` restrict a tolerance to where it applies.
@@ -86,11 +86,11 @@ struct CompareQuantity {
   // (the corrections of independent truncations). Empty: `relative` alone.
   std::vector<std::string> correction_from;
   // A theory column holding the judged level's own computed model error at each point (relative), added too:
-  // "D_ratio_error" (kinetic-converged-hcs, theory/converged_hcs_diffusion.hpp). Empty: none.
+  // "D_ratio_error" (kinetic-converged-hcs, theory/grid/converged_hcs_diffusion.hpp). Empty: none.
   std::string error_column;
   // The resolution the judged level claims for this quantity (relative): a judged point whose model error (relative
   // + the computed parts) exceeds it fails as unresolved, whatever DSMC says. A bound computed from companions widens
-  // with a bug that moves the companions as much as the level (oscillating densities, README "kill table"); this is the
+  // with a bug that moves the companions as much as the level (oscillating densities, docs/reliability.md, "kill table"); this is the
   // check that the computed bound is itself what the level was built to resolve (issue 12's targets). Infinite: none.
   double model_error_max = INFINITY;
   double relative = 0.05, z = 4.0;
@@ -101,7 +101,7 @@ struct CompareQuantity {
   std::string why;              // the reason for the tolerance, carried into report.json
 };
 
-// [plot]: the figure of the paper (design.md §3).
+// [plot]: the figure of the paper (docs/architecture.md §3).
 struct PlotSettings {
   std::string x = "t", y = "msd", xlabel, ylabel;  // x = "species": the values at the last time
   std::string key = "top left";  // legend position
@@ -128,10 +128,11 @@ struct Scene {
   PlotSettings plot;
 };
 
-// Throws InputError("file:line: key: what is wrong (allowed: …)").
-Scene load_scene(const std::string& path);
+// Throws InputError("file:line: key: what is wrong (allowed: …)"). `levels`: the theory levels' rules
+// (theory::level_rules(), from the level catalogue).
+Scene load_scene(const std::string& path, const LevelRules& levels);
 // The same from the file's text; `path` only names it in messages (and Scene::file). Fuzzed in tests/fuzz.
-Scene load_scene_text(const std::string& text, const std::string& path);
+Scene load_scene_text(const std::string& text, const std::string& path, const LevelRules& levels);
 
 // The scene at one value x of its sweep (mixture, restitution, Enskog as the parameter says), sweep removed.
 Scene sweep_point(const Scene& scene, double x);

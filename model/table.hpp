@@ -1,5 +1,5 @@
 #pragma once
-// Curves as the files hold them (design.md §4): long form, one row per (t or x, species),
+// Curves as the files hold them (docs/architecture.md §4): long form, one row per (t or x, species),
 // named columns; NaN where a column does not apply to a row (gnuplot skips it).
 #include <algorithm>
 #include <limits>

@@ -1,7 +1,7 @@
 #pragma once
 // Strict reading of one TOML table of a scene: every key is looked up through this class, and
 // whatever is left unread at finish() is an unknown key. Every failure is one InputError of the
-// form  file:line: table.key: what is wrong (allowed: …)  (design.md §4).
+// form  file:line: table.key: what is wrong (allowed: …)  (docs/architecture.md §4).
 #include <toml++/toml.h>
 
 #include <optional>

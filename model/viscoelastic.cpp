@@ -38,7 +38,7 @@ double series_sum(double y) {
 double restitution_series(double y) { return 1.0 + series_sum(y); }
 
 double restitution_pade(double y) {
-  // physics.md §5, [3/6] Padé in y.
+  // docs/physics.md §5, [3/6] Padé in y.
   const double num = 1 + y * (1.07232 + y * (0.574198 + y * 0.141552));
   const double den =
       1 + y * (1.07232 + y * (1.72765 + y * (1.37842 + y * (1.19449 + y * (0.467273 + y * 0.235585)))));
@@ -47,7 +47,7 @@ double restitution_pade(double y) {
 
 namespace {
 
-// x'' = -x^(3/2) - b x^(1/2) x'  (dimensionless contact problem, physics.md §5)
+// x'' = -x^(3/2) - b x^(1/2) x'  (dimensionless contact problem, docs/physics.md §5)
 int contact_rhs(sunrealtype, N_Vector u, N_Vector du, void* data) {
   const double b = *static_cast<double*>(data);
   const double x = NV_Ith_S(u, 0), v = NV_Ith_S(u, 1);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""How far the computed model errors of the D-dependent curves can be tightened (issue 12; README,
-"How far the computed bounds can be tightened").
+"""How far the computed model errors of the D-dependent curves can be tightened
+(docs/judging.md, "How far the computed bounds can be tightened").
 
 Every judged MSD, MSD ratio, D ratio and TAMSD of a kinetic scene carries the model error
 Dps = max(|kinetic - paper|, |kinetic - sonine1|) / |kinetic| per point (the scene's correction_from), plus

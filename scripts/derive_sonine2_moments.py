@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Exact collision moments of the second Sonine approximation (theory/sonine_second_order.cpp).
+"""Exact collision moments of the second Sonine approximation (theory/sonine/sonine_second_order.cpp).
 
 One species of inelastic hard spheres, d = 3, constant restitution alpha, reduced units of Brilliantov &
 Poschel: f = phi_M (1 + a2 S2(c^2) + a3 S3(c^2)), phi_M = pi^(-3/2) exp(-c^2), and

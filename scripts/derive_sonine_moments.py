@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Closed forms of the scalar Sonine collision moments H(p; q, r), p = 1..4 (theory/sonine_moment_table.cpp).
+"""Closed forms of the scalar Sonine collision moments H(p; q, r), p = 1..4 (theory/sonine/sonine_moment_table.cpp).
 
-The kinetic level's temperatures with a_2, a_3 (order 3) and a_4 (order 4) per species (theory/sonine_moment_cooling.hpp):
+The kinetic level's temperatures with a_2, a_3 (order 3) and a_4 (order 4) per species (theory/sonine/sonine_moment_cooling.hpp):
 species k's distribution is f_k = f_M,k [1 + sum_q a_kq S_q(c^2)], S_p = L_p^(1/2) (the scalar Sonine polynomials),
 c = v/sqrt(2 theta_k), theta = T/m. The collisional rate of <c^(2p)>_k at fixed theta_k from collisions with
 species i, linear in the a's (products a a dropped, as Garzo-Dufty/MG do at first Sonine), is
@@ -14,11 +14,11 @@ collision v_k' = v_k - beta (g.sigma) sigma, beta = mu_ik (1 + eps); the pair av
 (scripts/sonine_pair_algebra.py). Every H = beta P times a polynomial in a = theta_k/V, 1/a and beta with rational
 coefficients.
 Checks (tests/theory/test_sonine_moments.cpp): the table against a quadrature over both Maxwellians (p = 1..4); the a_2-only
-system equals MG's first Sonine (theory/sonine_system.hpp, whose p = 1 is v1 (A2)'s xi_ki) to rounding; one species
+system equals MG's first Sonine (theory/sonine/sonine_system.hpp, whose p = 1 is v1 (A2)'s xi_ki) to rounding; one species
 settles at Brilliantov & Poschel's second-Sonine a_2, a_3.
 
 Writes the C++ table to stdout (about 2 s, needs only sympy):
-    python3 scripts/derive_sonine_moments.py > theory/sonine_moment_table.cpp
+    python3 scripts/derive_sonine_moments.py > theory/sonine/sonine_moment_table.cpp
 """
 import sympy as sp
 

@@ -1,4 +1,4 @@
-"""Prints a generated C++ table of exact rational terms (theory/sonine_cpq_table.cpp, theory/sonine_moment_table.cpp):
+"""Prints a generated C++ table of exact rational terms (theory/sonine/sonine_cpq_table.cpp, theory/sonine/sonine_moment_table.cpp):
 the provenance lines, a static_assert that the header's count matches, and the array of rows."""
 import sys
 

@@ -1,15 +1,15 @@
 #!/usr/bin/env python3
-"""What limits MG's gamma = T1/T2: the Sonine sequence of the HCS beyond the orders granmix ships (issue 12).
+"""What limits MG's gamma = T1/T2: the Sonine sequence of the HCS beyond the orders granmix ships.
 
 An independent implementation of the binary HCS at Sonine order K (f_k = f_M,k [1 + sum_{q=2..K} a_kq S_q(c^2)],
 S_q = L_q^(1/2)), from the exact pair moments H(p; q, r) of scripts/derive_sonine_moments.py (sympy), solved by
 Newton in ln(theta2/theta1) and the a's, in two closures:
   linear  (granmix's): the rates linear in the a's, the product of zeta's a-part with the moments' a-part dropped
-          (theory/sonine_moment_cooling.hpp), K = 2 (MG's first Sonine), 3 (granmix's order 3) and 4 (not shipped);
+          (theory/sonine/sonine_moment_cooling.hpp), K = 2 (MG's first Sonine), 3 (granmix's order 3) and 4 (not shipped);
   full    K = 3 with every product kept (the moment equations exact for the truncated ansatz: a_k a_i collision
           terms and zeta(a) <c^2p>(a)).
 Orders 2 and 3 (linear) are checked against `granmix hcs --json` (T_ratio_sonine, T_ratio_sonine3) to 1e-6.
-The DSMC column is the mean of the paper-fidelity runs, seeds 1-3, of mg-fig04-* and mg-fig05-* (docs/paper-fidelity.md,
+The DSMC column is the mean of the paper-fidelity runs, seeds 1-3, of mg-fig04-* and mg-fig05-* (docs/validation.md,
 sigma ~ 0.1%). Prints one TSV row per point: the relative gaps theory/DSMC - 1 and the first species' c = 2 a_12.
 Usage: scripts/mg_gamma_sonine_orders.py [path/to/granmix]   (about 30 s; needs only sympy)
 """
@@ -46,7 +46,7 @@ def w(p, q):  # <c^2p S_q(c^2)> / <c^2p>: <c^4> = m(2)(1 + a2), <c^6> = m(3)(1 +
 def hcs_gamma(mu, delta, alpha, K, full=False):
     """gamma = T1/T2 and c_1 of the MG binary (montanero_garzo_binary: m = mu, 1; sigma = 1, 1; x1 = delta/(1+delta)).
     Equations: equal cooling rates zeta_1 = zeta_2 (MG Eq. 45) and the steady balances of <c^2p>_k, p = 2..K,
-    d<c^2p>/dt = R_kp + p zeta_k <c^2p> = 0 (theory/sonine_moment_cooling.hpp), zeta_k = -R_k1 / (3/2)."""
+    d<c^2p>/dt = R_kp + p zeta_k <c^2p> = 0 (theory/sonine/sonine_moment_cooling.hpp), zeta_k = -R_k1 / (3/2)."""
     x1 = delta / (1 + delta)
     mix = [(mu, x1), (1.0, 1 - x1)]
     Q = list(range(2, K + 1))
@@ -93,7 +93,7 @@ def hcs_gamma(mu, delta, alpha, K, full=False):
     return mu / math.exp(x[0]), 2 * x[1]
 
 
-# Mean of the paper-fidelity DSMC, seeds 1-3 (mg-fig04-mu*, mg-fig05-delta*; docs/paper-fidelity.md).
+# Mean of the paper-fidelity DSMC, seeds 1-3 (mg-fig04-mu*, mg-fig05-delta*; docs/validation.md).
 DSMC = {(2, 2): (1.53621, 1.34396, 1.11925), (10, 2): (5.31174, 3.79934, 1.94476), (0.1, 2): (0.12653, 0.18872, 0.45708),
         (4, 0.25): (3.45248, 2.38897, 1.35309), (4, 1): (2.69027, 2.05299, 1.32944), (4, 4): (2.36696, 1.88790, 1.30998)}
 print("\t".join(["mu", "delta", "alpha", "gamma_dsmc", "gap_order2", "gap_order3", "gap_order4", "gap_order3_full", "c1_order2",

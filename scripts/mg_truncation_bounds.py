@@ -3,7 +3,7 @@
 
 The judged theory is the first-Sonine HCS of the mixture (c_k = 2 a2,k, Phi_k = Phi_M (1 + a2,k S2)). Its
 next order is not available for mixtures; the computed proxy is the one-species second Sonine approximation
-at the same restitution (granmix hcs ... --json -> "one_species_truncation", theory/sonine_truncation.hpp),
+at the same restitution (granmix hcs ... --json -> "one_species_truncation", theory/sonine/sonine_truncation.hpp),
 applied to each species' own a2,k as relative changes:
   c:     |a2[2] - a2[1]| / |a2[1]|                                   (linear second-Sonine scheme)
   Phi/G: |Phi[2] - Phi[1]| / Phi[1], Phi[2] = 1 + a2,k (a2[2]/a2[1]) S2(x) + a2,k (a3[2]/a2[1]) S3(x)
@@ -16,10 +16,10 @@ Usage: scripts/mg_truncation_bounds.py [path/to/granmix]
 import json, subprocess, sys
 
 granmix = sys.argv[1] if len(sys.argv) > 1 else "build/granmix"
-# The Sonine polynomials of theory/sonine_polynomials.hpp (d = 3, x = c^2; S_n(0) > 0), restated here because
+# The Sonine polynomials of theory/sonine/sonine_polynomials.hpp (d = 3, x = c^2; S_n(0) > 0), restated here because
 # the bounds below scale the one-species changes to each MIXTURE species' own a2,k, which
 # SonineTruncation::phi_relative / delta_shift (one species, its own a2[1]) do not; a2, a3 themselves come from
-# granmix hcs (theory/sonine_second_order.cpp), not from this script.
+# granmix hcs (theory/sonine/sonine_second_order.cpp), not from this script.
 S2 = lambda x: 0.5 * x * x - 2.5 * x + 15 / 8
 S3 = lambda x: -x**3 / 6 + 1.75 * x * x - 35 / 8 * x + 35 / 16
 

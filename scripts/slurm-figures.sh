@@ -2,7 +2,7 @@
 # granmix on a Slurm cluster: `make figures` (paper fidelity) over MPI ranks, surviving time limits.
 # Submit from the repository root after `make build`:   sbatch scripts/slurm-figures.sh
 # One rank per socket, one thread per core of it; all DSMC replicas of all scenes are one pool of
-# units handed out longest first (README, "Cluster scale"). Five minutes before the time limit Slurm
+# units handed out longest first (docs/user-guide.md, "Cluster scale"). Five minutes before the time limit Slurm
 # sends USR1 to this script, which requeues the job; the ranks then get SIGTERM, write a last
 # checkpoint and stop; the requeued job resumes from the checkpoints (bit-identical results).
 #SBATCH --job-name=granmix-figures

@@ -1,7 +1,7 @@
 """Exact averages over one colliding pair of Maxwellians, shared by the generators of the closed forms
 (scripts/derive_sonine_cpq.py, scripts/derive_sonine_moments.py).
 
-As in theory/sonine_quadrature.hpp: the sigma integral of a rotation-invariant integrand is 4 pi times its value at
+As in theory/sonine/sonine_quadrature.hpp: the sigma integral of a rotation-invariant integrand is 4 pi times its value at
 sigma = z, and given g_z = u the pair splits into independent parts (units theta_k = 1/2, a = theta_k/V,
 V = theta_k + theta_i): the tagged v_z = r X + a u with X ~ N(0, 1), r = sqrt((1 - a)/2), |v_perp|^2 = s ~ Exp(1); the
 partner's v_iz = v_z - u with its own perpendicular part, c_i^2 = s_i + a (X^2/2 - 2 r X u + (1 - a) u^2),

@@ -1,4 +1,4 @@
-// Study (README, "v2 Fig. 5's intruder"): the stationary temperature of a tracer intruder in a homogeneously cooling
+// Study (docs/levels.md, "v2 Fig. 5's intruder"): the stationary temperature of a tracer intruder in a homogeneously cooling
 // gas, by a Monte Carlo of the tagged-particle (Boltzmann–Lorentz) problem, written independently of theory/.
 // Build and run (no dependencies; ~10 s per 1e6 time units):
 //   g++ -O2 -std=c++20 scripts/tracer_intruder_mc.cpp -o /tmp/tracer_intruder_mc

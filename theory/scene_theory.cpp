@@ -1,4 +1,4 @@
-#include "scene_theory.hpp"
+#include "theory/scene_theory.hpp"
 
 #include <fmt/format.h>
 
@@ -8,18 +8,18 @@
 #include <memory>
 #include <numeric>
 
-#include "diffusion.hpp"
-#include "galerkin_decay.hpp"
-#include "theory_level.hpp"
-#include "initial_state.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/grid/galerkin_decay.hpp"
+#include "theory/levels/level_catalogue.hpp"
+#include "theory/histories/initial_state.hpp"
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
-#include "msd.hpp"
-#include "parallel_each.hpp"
-#include "shell_average.hpp"
-#include "sonine_hcs.hpp"
-#include "tamsd.hpp"
-#include "time_unit.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/numerics/parallel_each.hpp"
+#include "theory/numerics/shell_average.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/rates/time_unit.hpp"
 
 namespace granmix::theory {
 
@@ -131,7 +131,7 @@ Table sweep_table(const model::Scene& s, const TheoryLevel& level) {
   auto is_checked = [&](double x) { return errors && std::find(s.dsmc.at.begin(), s.dsmc.at.end(), x) != s.dsmc.at.end(); };
   auto point_rows = [&](double x) {
     std::vector<std::vector<double>> out;
-    const std::unique_ptr<TheoryLevel> own = make_theory_level(level.name());
+    const std::unique_ptr<TheoryLevel> own = level.descriptor().make();
     const model::Scene p = model::sweep_point(s, x);
     SettledDiffusion d;
     std::vector<double> error(N, nan);
@@ -374,6 +374,9 @@ model::Scene in_natural_units(const model::Scene& scene, double unit) {
 
 }  // namespace
 
+model::Scene load_scene(const std::string& path) { return model::load_scene(path, level_rules()); }
+model::Scene load_scene_text(const std::string& text, const std::string& path) { return model::load_scene_text(text, path, level_rules()); }
+
 bool theory_uses_rtol(const model::Scene& s) {
   if (s.theory.sweep) {
     // A D-ratio sweep's increments are histories in time (a sweep point is the scene without its sweep), unless its
@@ -401,20 +404,24 @@ TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairT
   const double unit = scene_time_unit(scene);
   const model::Scene scaled = in_natural_units(scene, unit);
   const model::Scene& s = scaled;
-  const auto level = make_theory_level(s.theory.level);
+  const LevelCatalogue& catalogue = level_catalogue();
+  const LevelDescriptor& judged = catalogue.find(s.theory.level);
+  const auto level = judged.make();
   // The judged level and a companion that solve the same Galerkin problem build its pair tables once.
   if (!tables) tables = std::make_shared<GalerkinPairTables>();
   r.table = level_table(s, *level, r.stats, tables);
-  if (s.theory.level != "paper") {  // the papers' curves beside the judged level's
-    SolverStats paper_stats;
-    append_level_columns(r.table, level_table(s, *make_theory_level("paper"), paper_stats), "paper");
-  }
-  for (const std::string correction : {"sonine1", "kinetic", "cooling3", "converged", "sonine4", "reshaped", "cooling4", "grid", "a2", "basis", "knots", "rule", "partners", "domain"})  // the other levels a model error is measured from
-    if (corrected_from(s, correction)) {
-      SolverStats companion_stats;
-      append_level_columns(r.table, level_table(s, *make_theory_level(companion_level(s.theory.level, correction)), companion_stats, tables),
-                           correction);
+  for (const auto& d : catalogue.levels())  // the papers' curves beside the judged level's
+    if (d->reported_beside_others && d.get() != &judged) {
+      SolverStats paper_stats;
+      append_level_columns(r.table, level_table(s, *d->make(), paper_stats), d->name);
     }
+  // The companions a model error is measured from, in the catalogue's order of corrections.
+  for (const CorrectionMeaning& correction : catalogue.corrections()) {
+    const LevelCompanion* c = judged.companion(correction.name);
+    if (c == nullptr || !corrected_from(s, correction.name) || catalogue.find(c->level).reported_beside_others) continue;
+    SolverStats companion_stats;
+    append_level_columns(r.table, level_table(s, *catalogue.find(c->level).make(), companion_stats, tables), correction.name);
+  }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;

@@ -1,5 +1,5 @@
 #pragma once
-// The theory curves a scene asks for, and nothing else (design.md §1: "model only what a scene
+// The theory curves a scene asks for, and nothing else (docs/architecture.md §1: "model only what a scene
 // needs"): temperatures, MSD, t_s, D_k/D_1, γ, TAMSD along the time grid, or settled D_k/D_1
 // along a parameter sweep.
 #include <memory>
@@ -7,9 +7,14 @@
 
 #include "model/scene.hpp"
 #include "model/table.hpp"
-#include "temperature_history.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 namespace granmix::theory {
+
+// A scene read and checked against the theory levels' catalogue (model::load_scene with theory::level_rules()):
+// the one way in for every command, study and test.
+model::Scene load_scene(const std::string& path);
+model::Scene load_scene_text(const std::string& text, const std::string& path);
 
 struct TheoryResult {
   model::Table table;

@@ -1,5 +1,5 @@
 // The measurement helpers of `granmix bench gaps` (bench/velocity_memory.hpp, replica_z_null.hpp)
-// against exact results: the settled-HCS closed form of the first-Sonine MSD (physics-beyond.md §2),
+// against exact results: the settled-HCS closed form of the first-Sonine MSD (docs/physics-beyond.md §2),
 // the rate a window recovers from exact ⟨v²⟩ and Q, the jackknife of a mean, and Student's t.
 #include <catch2/catch.hpp>
 

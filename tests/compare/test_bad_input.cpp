@@ -1,5 +1,5 @@
 // Every kind of bad scene input, through the command line: one message naming file, line and key,
-// exit code 2, and no output written (design.md §4).
+// exit code 2, and no output written (docs/architecture.md §4).
 #include <catch2/catch.hpp>
 #include <filesystem>
 
@@ -150,8 +150,7 @@ TEST_CASE("a solver failure at one sweep point exits 3 naming the solver and the
   INFO(r.output);
   CHECK(r.code == 3);
   CHECK(r.output.find("converged HCS") != std::string::npos);
-  // The state where the operator turned singular (2.42x and 99.8% until the stationary solves kept the drift's outflow term,
-  // 2026-12-05: another iterate, the same runaway).
+  // The state where the operator turns singular: the heavy species runs away with the energy.
   CHECK(r.output.find("species 2 moves 2.71x as fast and holds 99.9% of the energy") != std::string::npos);
   CHECK(r.output.find("level kinetic or kinetic-converged computes this mixture") != std::string::npos);
   CHECK(r.output.find("(at the sweep point eps = 0.3)") != std::string::npos);

@@ -32,14 +32,14 @@ std::vector<nlohmann::json> bench_json(const std::string& args, const std::files
 
 }  // namespace
 
-TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of design.md 3 - table and figure written", "[compare][dsmc]") {
+TEST_CASE("granmix bench selectors --quick --json: one object per case with the keys of docs/architecture.md 3 - table and figure written", "[compare][dsmc]") {
   const auto d = test::fresh_dir("bench");
   const std::vector<nlohmann::json> objects = bench_json("selectors --quick --json --repeats 1", d);
   std::size_t cases = 0;
   for (const auto& j : objects) {
     std::vector<std::string> keys;
     for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-    // design.md §3 names these nine; extensions may follow, none may be renamed or missing.
+    // docs/architecture.md §3 names these nine; extensions may follow, none may be renamed or missing.
     for (const char* k : {"selector", "system", "species", "particles", "collisions", "trials", "seconds", "collisions_per_second", "acceptance"})
       CHECK(j.contains(k));
     CHECK(j["collisions"].get<double>() <= j["trials"].get<double>());
@@ -64,11 +64,11 @@ TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by sc
     ++levels;
     CHECK(j["kinetic_seconds"].get<double>() > 0.0);
     CHECK(j["paper_seconds"].get<double>() > 0.0);
-    // bo1-fig01/-02/-03-aged: the kinetic level moves the light MSD by 7-15% (docs/paper-fidelity.md), never by all of it.
+    // bo1-fig01/-02/-03-aged: the kinetic level moves the light MSD by 7-15% (docs/validation.md), never by all of it.
     CHECK(j["kinetic_change"].get<double>() > 0.01);
     CHECK(j["kinetic_change"].get<double>() < 0.5);
     // Its error beside its cost: the judged level's computed model error (model/model_error.hpp), within the 3% these
-    // grid levels claim (model_error_max) and not nothing (0.06-0.6% at their judged points, README).
+    // grid levels claim (model_error_max) and not nothing (0.06-0.6% at their judged points, docs/validation.md).
     CHECK(j["kinetic_model_error"].get<double>() > 1e-4);
     CHECK(j["kinetic_model_error"].get<double>() < 0.03);
     CHECK(j["kinetic_seconds_with_companions"].get<double>() > 0.0);
@@ -76,7 +76,7 @@ TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by sc
   CHECK(levels == 3);
 }
 
-// [slow]: 75 s of CI's sanitizer job (2026-12-05), whose DSMC is covered by the hard and property labels; it runs in make test.
+// [slow]: 75 s of CI's sanitizer job, whose DSMC is covered by the hard and property labels; it runs in make test.
 TEST_CASE("granmix bench gaps --quick --json: decomposition objects whose factors multiply to DSMC/Eq17, five tables written", "[compare][dsmc][slow]") {
   const auto d = test::fresh_dir("bench-gaps");
   const std::vector<nlohmann::json> objects = bench_json("gaps --quick --json", d);

@@ -1,4 +1,4 @@
-// Checkpoint and restart through the command line (issue 14): a `granmix dsmc` and a
+// Checkpoint and restart through the command line: a `granmix dsmc` and a
 // `granmix validate` killed (SIGKILL) after their first snapshot and restarted with --restart write
 // the same TSV bytes as an uninterrupted run (the provenance lines of command line and date aside); damaged
 // and foreign checkpoint files are refused with exit 2, naming the file, and nothing is written.
@@ -73,7 +73,7 @@ std::vector<pid_t> session_members(pid_t sid) {
 
 // A killed node: SIGKILL to every process of the session, until none is left. Open MPI puts each rank
 // in a process group of its own, so a signal to mpirun's group leaves the ranks running, still writing
-// in the checkpoint folder while the restart reads it (what failed CI once: exit 2 on a vanished snapshot).
+// in the checkpoint folder while the restart reads it (which then fails with exit 2 on a vanished snapshot).
 bool kill_session(pid_t sid) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
   while (std::chrono::steady_clock::now() < deadline) {

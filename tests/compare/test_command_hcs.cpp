@@ -7,15 +7,15 @@
 
 #include "model/enskog.hpp"
 #include "run_cli.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/sonine_second_order.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/sonine/sonine_second_order.hpp"
 
 using namespace granmix;
 
-TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compare]") {
+TEST_CASE("granmix hcs --json: fields of docs/architecture.md §3 in input order", "[compare]") {
   const auto r = test::run_granmix("hcs --mass 1,100 --diameter 1,4.6416 --density 0.1,0.1 --eps 0.5 --json");
   INFO(r.output);
   REQUIRE(r.code == 0);
@@ -33,7 +33,7 @@ TEST_CASE("granmix hcs --json: fields of design.md §3 in input order", "[compar
   CHECK(j["species"][1]["T_ratio_sonine"].get<double>() == Approx(sonine.T[1] / sonine.T[0]).epsilon(1e-14));
   CHECK(j["species"][0]["c"].get<double>() == Approx(sonine.c[0]).epsilon(1e-14));
   CHECK(j["zeta_star"].get<double>() == Approx(sonine.zeta_star).epsilon(1e-14));
-  // Keys in the order of design.md §3 (extensions after them).
+  // Keys in the order of docs/architecture.md §3 (extensions after them).
   const auto ordered = nlohmann::ordered_json::parse(r.output);
   std::vector<std::string> keys;
   for (const auto& item : ordered["species"][0].items()) keys.push_back(item.key());

@@ -14,11 +14,11 @@
 #include "model/mixture_generators.hpp"
 #include "run_cli.hpp"
 #include "tsv_reader.hpp"
-#include "theory/converged_hcs.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/msd.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine_hcs.hpp"
+#include "theory/grid/converged_hcs.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
 
 using namespace granmix;
 
@@ -43,8 +43,8 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
   REQUIRE(t.comments.size() == 6);
   CHECK(t.comments[0].rfind("# granmix ", 0) == 0);
   CHECK(t.comments[1].find("sha256: ") != std::string::npos);
-  // The kinetic-converged-grid level judged (since 2026-12-05: every species' density in time on the speed grid), the
-  // paper level beside it (issue 12), and the two companions its model errors are computed from: every shape through a₂
+  // The kinetic-converged-grid level judged (every species' density in time on the speed grid), the
+  // paper level beside it, and the two companions its model errors are computed from: every shape through a₂
   // alone (a2: the a₃ term's size) and the tracer problem's basis of 10 functions (basis).
   CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "msd", "T_paper", "msd_paper", "T_a2", "msd_a2", "T_basis", "msd_basis"});
   // The basis does not enter the temperatures (to the solver's tolerance: the VACF modes change CVODE's steps); the
@@ -75,7 +75,7 @@ TEST_CASE("granmix theory bo1-fig02: provenance - columns - ballistic start - ln
 
 // [slow]: not under the sanitizers (CI's budget; "granmix theory mg-fig07" runs the same level and companions there).
 TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside the first Sonine's, with their computed errors", "[compare][slow]") {
-  // Level kinetic-hcs-converged (since 2026-12-05): Φ_k the converged HCS's speed densities themselves, their model error
+  // Level kinetic-hcs-converged: Φ_k the converged HCS's speed densities themselves, their model error
   // per bin from four companions (knots, rule, partners, domain) and the grid's elastic-limit error (phi_error).
   const Tsv t = theory_of("mg-fig03");
   CHECK(t.columns == std::vector<std::string>{"v", "species", "phi", "phi_maxwell", "delta", "G", "G_maxwell", "phi_error", "delta_error",
@@ -83,11 +83,11 @@ TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside t
                                               "delta_rule", "G_rule", "phi_partners", "delta_partners", "G_partners", "phi_domain",
                                               "delta_domain", "G_domain"});
   // Over the judged ranges (v* ≤ 1.2, three thermal widths of species 1; λ₁ = 3.2): the computed model error of Φ₁ and Φ₂
-  // is below 0.5% in every bin, the first included (measured 0.11% / 0.09% since 2026-12-07: w_z by panels, full
-  // partners; with the 256-point Hermite rule Φ₂'s first bin had 4.0%, with 64 points Φ₁'s 16%), and Δ₁'s below 2% up to
+  // is below 0.5% in every bin, the first included (measured 0.11% / 0.09%: w_z by panels, full
+  // partners; with a 256-point Hermite rule Φ₂'s first bin has 4.0%, with 64 points Φ₁'s 16%), and Δ₁'s below 2% up to
   // v* = 1.1, its zero crossing at v* = 0.525 included (measured ≤ 0.84%, 0.23% at the crossing; with Sonine partners 19%
   // there), where the first Sonine's Φ₁ differs from the level by more than 2% from one thermal width on (3.1%; its
-  // judged model error was 9.4%), so the judged level's tolerance separates the two.
+  // own computed model error is 9.4%), so the judged level's tolerance separates the two.
   double model[2] = {0.0, 0.0}, delta = 0.0, sonine = 0.0;
   for (std::size_t row = 0; row < t.rows.size(); ++row) {
     const auto k = std::size_t(t.at(row, "species")) - 1;
@@ -109,7 +109,7 @@ TEST_CASE("granmix theory mg-fig03: the solved densities' Phi and Delta beside t
   CHECK(sonine > 0.02);
 }
 
-// [slow]: 45 s of CI's sanitizer job (bo1-fig02's three speed-grid levels twice; 2026-12-05), which sees those levels
+// [slow]: 45 s of CI's sanitizer job (bo1-fig02's three speed-grid levels twice), which sees those levels
 // through "granmix theory bo1-fig02" already; it runs in make test.
 TEST_CASE("granmix theory --level: one level alone equals the scene run's companion column - bad names exit 2, nothing written",
           "[compare][slow]") {
@@ -141,7 +141,7 @@ TEST_CASE("granmix theory --level: one level alone equals the scene run's compan
   CHECK(bad.output.find("--level") != std::string::npos);
   CHECK(bad.output.find("allowed") != std::string::npos);
   CHECK(!std::filesystem::exists(d / "bo1-fig02" / "theory_kinetic-sonine9.tsv"));
-  // The converged level along a history (theory/galerkin_decay.hpp) from the kinetic level's start: the same ballistic
+  // The converged level along a history (theory/grid/galerkin_decay.hpp) from the kinetic level's start: the same ballistic
   // start (its memory builds up from zero: 3T_k t²/m_k at t = 0.01 to 1e-4), then the light species' long-time MSD
   // moves with the converged D (by 0.17% at t = 1e6; the heavy one by 0.37%).
   REQUIRE(test::run_granmix("theory " + test::scene_path("bo1-fig02.toml") + " --level kinetic-converged --out " + d.string()).code == 0);
@@ -153,7 +153,7 @@ TEST_CASE("granmix theory --level: one level alone equals the scene run's compan
 
 namespace {
 
-// An independent transcription of the Maxwellian rates of physics-beyond.md §1 (not the library's):
+// An independent transcription of the Maxwellian rates of docs/physics-beyond.md §1 (not the library's):
 // ν_ki = (4/3)√(2π) n_i σ_ki² μ_ik (1+ε) v_ki, ξ_ki = 2ν_ki[1 − ½μ_ik(1+ε)(1 + m_k T_i/(m_i T_k))],
 // D_k = T_k / (m_k (ν_k − ξ_k/2)) (= v1 Eq. 19 by the identity τ_v,ki⁻¹ = ν_ki − ξ_ki/2).
 struct BinaryByHand {
@@ -187,13 +187,13 @@ struct BinaryByHand {
 // [slow]: v1 Fig. 9's four converged histories (level and three companions) under ASan would add ~30 s to CI's sanitizer
 // job, which runs the same scene's compare in the guard rails already.
 TEST_CASE("granmix theory bo1-fig09: kinetic-converged-cooling3's own next orders - the temperatures' with the converged D", "[compare][slow]") {
-  // Δcgb (stop 42): the MSD's model error from the level's own companions, each solving the same converged tracer
+  // Δcgb: the MSD's model error from the level's own companions, each solving the same converged tracer
   // problem: `converged` (first-Sonine temperatures), `cooling4` (kinetic-converged-cooling4: a₄ relaxing too) and
   // `basis` (kinetic-converged-cooling3-basis10).
   const Tsv t = theory_of("bo1-fig09");
   for (const char* c : {"msd_converged", "msd_cooling4", "msd_basis", "T_cooling4"}) CHECK(std::count(t.columns.begin(), t.columns.end(), c) == 1);
   CHECK(std::count(t.columns.begin(), t.columns.end(), "msd_sonine4") == 0);
-  // cooling4's temperatures are kinetic-cooling4's (the level's T companion before stop 42).
+  // cooling4's temperatures are kinetic-cooling4's.
   const auto d = test::fresh_dir("theory-cooling4");
   const auto r = test::run_granmix("theory " + test::scene_path("bo1-fig09.toml") + " --level kinetic-cooling4 --out " + d.string());
   INFO(r.output);
@@ -225,9 +225,8 @@ TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent tran
   CHECK(t.columns == std::vector<std::string>{"eps", "species", "D_ratio", "D_ratio_increment", "D_ratio_error", "D_ratio_paper", "D_ratio_increment_paper"});
   REQUIRE(t.rows.size() == 42);
   // The level's own model error, at the three DSMC points only (tests/theory/test_converged_hcs.cpp checks its parts):
-  // 0.40% at ε = 0.2 (0.72% until stop 39, 2026-12-05: the speed grid's gain became exact over σ̂, its grid part
-  // 3.1e-4 → 1.4e-4, and the HCS partners' part is computed with full partners, 6.9e-4 → 3.0e-4; 0.70% until stop 43,
-  // when the tracer problem's partners' part became computed from the solved densities, 5.6e-3 → 2.7e-3), 0.15–0.17% at
+  // 0.40% at ε = 0.2 (its grid part 1.4e-4 with the gain exact over σ̂, the HCS partners' part 3.0e-4 computed with
+  // full partners, the tracer problem's partners' part 2.7e-3 computed from the solved densities), 0.15–0.17% at
   // 0.5 and 0.8.
   for (std::size_t row = 1; row < t.rows.size(); row += 2) {
     const double e = t.at(row, "eps"), error = t.at(row, "D_ratio_error");
@@ -237,8 +236,7 @@ TEST_CASE("granmix theory bo1-fig05: D2/D1 along eps against an independent tran
     if (dsmc) CHECK(error > 1e-3);
     if (dsmc) CHECK(error < 1e-2);
   }
-  // 0.399% since stop 43 (0.696% with the tracer partners' part estimated by the a₃ term's size; 0.667% before the
-  // stationary solves kept the drift's outflow term).
+  // 0.399% (0.696% with the tracer partners' part estimated by the a₃ term's size instead).
   CHECK(t.at(9, "D_ratio_error") == Approx(3.99e-3).epsilon(0.01));
   // The judged kinetic-converged-hcs column (its D at the converged HCS: tests/theory/test_converged_hcs.cpp): from the
   // level's own settled start at constant ε its MSD increments give the settled ratio within 0.5%.
@@ -281,7 +279,7 @@ TEST_CASE("granmix dsmc bo1-fig02: columns with errors and identical data for 1 
   CHECK(t.columns == std::vector<std::string>{"t", "species", "T", "T_err", "msd", "msd_err", "collisions", "collisions_err"});
   CHECK(t.comments[2].find("# seed: 3") == 0);
   CHECK(t.comments[3] == "# fidelity: quick");
-  // Provenance differs (command, date); the numbers must not (design.md §5).
+  // Provenance differs (command, date); the numbers must not (docs/architecture.md §5).
   CHECK(test::data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv") == test::data_lines(d / "b" / "bo1-fig02" / "dsmc.tsv"));
   const auto c = test::run_granmix("dsmc " + scene + " --out " + (d / "c").string() + " --seed 4");
   CHECK(test::data_lines(d / "c" / "bo1-fig02" / "dsmc.tsv") != test::data_lines(d / "a" / "bo1-fig02" / "dsmc.tsv"));
@@ -342,7 +340,7 @@ TEST_CASE("mg-fig01 scene: gamma(t) in MG time units - theory to the Maxwellian 
   CHECK(th.at(last, "gamma_paper") == Approx(maxwell).epsilon(1e-4));
   CHECK(th.at(last, "gamma_cooling4") == Approx(order4).epsilon(1e-4));
   CHECK(std::abs(th.at(last, "gamma_cooling4") / th.at(last, "gamma") - 1.0) > 5e-4);
-  // DSMC: the first-Sonine value within 1% (issue 4's bound for γ), statistical error ~0.4%.
+  // DSMC: the first-Sonine value within 1% (the bound asked of γ), statistical error ~0.4%.
   CHECK(ds.at(last, "gamma") == Approx(sonine).epsilon(0.01));
 }
 
@@ -358,14 +356,14 @@ TEST_CASE("granmix compare: deviations - report.json - figure - exit 1 when a to
                           "acceptance", "particles", "replicas", "seed", "fidelity"})
     CHECK(rep.contains(key));
   // The scene passes; γ's model error is computed (the larger of the order-3 level's corrections from the first Sonine
-  // and to order 4: 0.08% at most, measured 2026-12-05) and the paper level's gap is reported.
+  // and to order 4: 0.08% at most, measured) and the paper level's gap is reported.
   CHECK(rep["pass"].get<bool>());
   CHECK(rep["quantities"]["gamma"]["failed"].get<int>() == 0);
   CHECK(rep["quantities"]["gamma"]["tolerance"]["correction_from"] == nlohmann::json::array({"kinetic", "cooling4"}));
   CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() > 2e-4);
   CHECK(rep["quantities"]["gamma"]["max_model_error"].get<double>() < 0.002);
   CHECK(rep["quantities"]["gamma"].contains("paper_max_rel"));
-  // γ's resolution claimed (issue 12's 0.5%) holds at every judged point.
+  // γ's resolution claimed (0.5%) holds at every judged point.
   CHECK(rep["quantities"]["gamma"]["tolerance"]["model_error_max"].get<double>() == 0.005);
   CHECK(rep["quantities"]["gamma"]["unresolved"].get<int>() == 0);
   // The same scene with an impossible tolerance fails with exit code 1 and says so.
@@ -450,7 +448,7 @@ TEST_CASE("granmix validate: every scene of a folder - summary.tsv and summary.j
 }
 
 TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised - G = exp(2 beta v/zeta) Phi", "[compare]") {
-  // The paper level's columns (the judged level is the converged HCS's density since 2026-12-05: its Φ normalised too).
+  // The paper level's columns (the judged level is the converged HCS's density: its Φ normalised too).
   const Tsv t = theory_of("mg-fig07-alpha0.5");
   REQUIRE(t.columns.size() > 11);
   CHECK(std::vector<std::string>(t.columns.begin(), t.columns.begin() + 12) ==
@@ -489,7 +487,7 @@ TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised 
 }
 
 TEST_CASE("granmix theory mg-fig06: gamma(n*)/gamma(0) with Enskog chi against the in-process solvers", "[compare]") {
-  // Judged since 2026-12-06: the converged HCS (kinetic-hcs-converged); the paper level is MG's first Sonine.
+  // Judged: the converged HCS (kinetic-hcs-converged); the paper level is MG's first Sonine.
   const Tsv t = theory_of("mg-fig06-alpha0.6");
   CHECK(t.columns == std::vector<std::string>{"n_star", "species", "gamma", "gamma_maxwell", "gamma_ratio", "gamma_ratio_maxwell", "gamma_paper",
                                               "gamma_ratio_paper"});
@@ -522,7 +520,7 @@ TEST_CASE("settled distribution of an elastic binary: the DSMC histogram is the 
   // Elastic and mechanically different (μ = 4): the settled state is exactly Maxwellian at equal
   // temperatures, so theory's Φ (c = 0) is exact and every bin must agree within its standard error.
   // v* <= 1.2: species 1 (λ1 = 5) still fills the last bin. 32 replicas: z follows Student's t with
-  // 31 degrees of freedom; P(|t| > 4) over 48 bins is then 2%, at 8 replicas it was 25%.
+  // 31 degrees of freedom; P(|t| > 4) over 48 bins is then 2%, at 8 replicas it would be 25%.
   test::write_file(d / "s.toml", "[scene]\nname = \"s\"\n[mixture]\nmontanero_garzo = { mu = 4, delta = 0.5, w = 1 }\n"
                                  "[collisions]\nrestitution = 1\n[initial]\ntemperatures = \"hcs\"\n"
                                  "[time]\nunit = \"mg\"\nstart = 5\nend = 100\npoints = 20\nspacing = \"linear\"\n"

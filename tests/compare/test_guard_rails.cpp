@@ -1,4 +1,4 @@
-// Numerical guard rails (issue 15): no NaN or infinity reaches a judged column unmarked. In
+// Numerical guard rails: no NaN or infinity reaches a judged column unmarked. In
 // theory.tsv and dsmc.tsv a cell is "nan" only where the column does not apply to the row
 // (model::Table::missing: then it is missing on both sides); deviations.tsv never holds one.
 // Four small scenes at quick fidelity: time curves, a viscoelastic law, a sweep, a distribution (the second and the last
@@ -12,6 +12,7 @@
 #include "model/scene.hpp"
 #include "run_cli.hpp"
 #include "tsv_reader.hpp"
+#include "theory/scene_theory.hpp"
 
 using namespace granmix;
 
@@ -31,7 +32,7 @@ void check_guard_rails(const std::vector<std::string>& scenes, const std::string
     const auto r = test::run_granmix("compare " + test::scene_path(name + ".toml") + " --out " + d.string() + " --threads 2");
     INFO(name << "\n" << r.output);
     REQUIRE((r.code == 0 || r.code == 1));  // 1: a tolerance failed, which is not this test's concern
-    const model::Scene s = model::load_scene(test::scene_path(name + ".toml"));
+    const model::Scene s = theory::load_scene(test::scene_path(name + ".toml"));
     const test::Tsv th = test::read_tsv(d / name / "theory.tsv"), ds = test::read_tsv(d / name / "dsmc.tsv");
     std::size_t both = 0;
     for (const auto& q : s.compare) {
@@ -78,16 +79,16 @@ TEST_CASE("guard rails: judged columns of compare outputs hold no unmarked nan o
 }
 
 // The viscoelastic scene on its own and [slow]: its compare runs four converged histories (the level and its companions
-// converged, cooling4, basis10 since stop 42), 52 s under ASan of the 88 s this test took with the two scenes above —
-// with them CI's run was 1796 s (2026-12-05); the sanitizers see that code through the Galerkin history tests
-// (test_galerkin_decay.cpp: settled histories, viscoelastic tables) and the hard viscoelastic cases.
+// converged, cooling4, basis10), 52 s under ASan of the 88 s it takes with the two scenes above; the sanitizers see
+// that code through the Galerkin history tests (test_galerkin_decay.cpp: settled histories, viscoelastic tables) and
+// the hard viscoelastic cases.
 TEST_CASE("guard rails: a viscoelastic history's judged columns hold no unmarked nan or inf", "[compare][slow]") {
   check_guard_rails({"bo1-fig09"}, "guard-rails-viscoelastic");
 }
 
 // The distribution scene on its own and [slow] (it runs in make test, not under the sanitizers): its level solves the
 // densities with the 64-point rule five times (the level, its elastic limit, four companions' variants), 114 s of CI's
-// sanitizer job with the three scenes above (2026-12-05); the sanitizers see that code through
+// sanitizer job with the three scenes above; the sanitizers see that code through
 // "granmix theory mg-fig07" and the converged-distribution tests.
 TEST_CASE("guard rails: a settled distribution's judged columns hold no unmarked nan or inf", "[compare][slow]") {
   check_guard_rails({"mg-fig03"}, "guard-rails-distribution");

@@ -1,4 +1,4 @@
-// index.html of `granmix validate` (issue 11): one page with the summary table, a section per scene
+// index.html of `granmix validate`: one page with the summary table, a section per scene
 // with its figure, tolerances and whys, and relative links to the scene's files; all text escaped.
 #include <catch2/catch.hpp>
 #include <fstream>

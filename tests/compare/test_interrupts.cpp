@@ -1,4 +1,4 @@
-// Interrupts and unwritable outputs (issue 15): a real SIGINT/SIGTERM sent to a running
+// Interrupts and unwritable outputs: a real SIGINT/SIGTERM sent to a running
 // `granmix compare` ends it with 130/143, one line saying what was finished, and nothing partial on
 // disk; an output location that cannot be written is refused with exit 2 before any computing.
 #include <fcntl.h>

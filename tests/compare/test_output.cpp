@@ -1,4 +1,4 @@
-// Output files: the SHA-256 of provenance headers and the TSV format of design.md §4.
+// Output files: the SHA-256 of provenance headers and the TSV format of docs/architecture.md §4.
 #include <catch2/catch.hpp>
 #include <filesystem>
 #include <fstream>

@@ -13,12 +13,13 @@
 #include "compare/tsv_reader.hpp"
 #include "dsmc/scene_dsmc.hpp"
 #include "model/scene.hpp"
+#include "theory/scene_theory.hpp"
 
 using namespace granmix;
 
 TEST_CASE("scheduler, one process: records independent of threads, longest first, estimates within 25% of the collisions",
           "[compare][dsmc]") {
-  const model::Scene s = model::load_scene(test::scene_path("bo1-fig05.toml"));  // a sweep: 3 ensembles x 8 replicas
+  const model::Scene s = theory::load_scene(test::scene_path("bo1-fig05.toml"));  // a sweep: 3 ensembles x 8 replicas
   dsmc::RunOptions run;
   const auto setups = dsmc::plan_scene_dsmc(s, run);
   REQUIRE(setups.size() == 3);
@@ -100,7 +101,7 @@ TEST_CASE("mpirun -n 3 granmix validate and compare: every TSV and report identi
     CHECK(test::data_lines(d / "serial" / "bo1-fig05" / f) == test::data_lines(d / "mpi-compare" / "bo1-fig05" / f));
   const auto summary = nlohmann::json::parse(std::ifstream(d / "mpi" / "summary.json"));
   CHECK(summary["ranks"] == 3);
-  CHECK(summary["dsmc_units"] == 56);  // bo1-fig05: 3 points x 8 quick replicas; mg-fig01: 32 (since 2026-12-05)
+  CHECK(summary["dsmc_units"] == 56);  // bo1-fig05: 3 points x 8 quick replicas; mg-fig01: 32
   // Units ran on more than one rank (the rank column of units.tsv).
   std::ifstream units(d / "mpi" / "units.tsv");
   std::set<std::string> used;

@@ -1,5 +1,5 @@
 #pragma once
-// Reads the TSV files of design.md §4 back for tests: '#' lines, one header line, numbers ("nan" too).
+// Reads the TSV files of docs/architecture.md §4 back for tests: '#' lines, one header line, numbers ("nan" too).
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -1,4 +1,4 @@
-// Checkpoint and restart (issue 14): a replica stopped after any snapshot and resumed from the file
+// Checkpoint and restart: a replica stopped after any snapshot and resumed from the file
 // gives a ReplicaRecord bit-identical to the uninterrupted run (timings aside), for every method, an
 // aged start and a TAMSD run; checkpointing itself never changes the trajectory; a finished replica
 // is read from its .done file; damaged or foreign files are refused naming the file.
@@ -143,7 +143,7 @@ TEST_CASE("damaged and foreign checkpoint files are refused naming the file and 
   std::swap(swapped[12], swapped[15]), std::swap(swapped[13], swapped[14]);
   refused(swapped, "other byte order");
   refused("hello", "not a granmix checkpoint");
-  std::string format1 = good;  // a file of the format before the float intercepts (epoch not stored)
+  std::string format1 = good;  // a file of format 1 (no float intercepts, epoch not stored)
   format1[8] = 1, format1[9] = format1[10] = format1[11] = 0;
   refused(format1, "checkpoint format 1, this granmix reads format 2");
   // Another version and another scene: valid files of another identity.

@@ -1,4 +1,4 @@
-// The collision rule (physics.md §1), the random streams and the sum tree, one piece at a time.
+// The collision rule (docs/physics.md §1), the random streams and the sum tree, one piece at a time.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>

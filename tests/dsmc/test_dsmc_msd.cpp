@@ -6,10 +6,10 @@
 
 #include "dsmc/ensemble.hpp"
 #include "model/enskog.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/msd.hpp"
-#include "theory/tamsd.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 using namespace granmix;
 
@@ -48,7 +48,7 @@ TEST_CASE("v1 Fig. 2 binary: DSMC MSD against Eq. (17)", "[dsmc]") {
       const double rel = v / th - 1, z = (v - th) / r.msd.err[j * 2 + k];
       std::printf("Fig. 2 MSD t=%-6g species %zu: DSMC/theory - 1 = %+.4f (z %.1f)\n", s.times[j], k + 1, rel, z);
       if (k == 1 || s.times[j] < 0.5) {
-        // Heavy species at all times and both species in the ballistic regime: the issue's 5%.
+        // Heavy species at all times and both species in the ballistic regime: within 5%.
         CHECK(std::abs(rel) < 0.05);
       } else {
         // Light species after the first collisions: Eq. (17) (Maxwellian rates, exponential velocity
@@ -79,13 +79,13 @@ TEST_CASE("TAMSD equals the ensemble MSD in an elastic gas and falls below it in
                 cooling.msd.mean[l]);
     CHECK(std::abs(z) < 4);
   }
-  // Cooling gas: the window [0, 𝒯] includes slow late times, so δ²(Δ) < ⟨R²(Δ)⟩ (physics.md §4).
+  // Cooling gas: the window [0, 𝒯] includes slow late times, so δ²(Δ) < ⟨R²(Δ)⟩ (docs/physics.md §4).
   CHECK(cooling.tamsd.mean[2] + 4 * cooling.tamsd.err[2] < cooling.msd.mean[2]);
 }
 
 TEST_CASE("TAMSD of a cooling gas follows the settled-state model in the ballistic regime", "[dsmc]") {
-  // Regression: a uniform grid of start times over [0, 𝒯] overweighted the hot start (τ0 ≪ 𝒯) and
-  // gave 2.5 times the ballistic TAMSD. Start at Haff's law (one species, settled by definition).
+  // A uniform grid of start times over [0, 𝒯] would overweight the hot start (τ0 ≪ 𝒯) and
+  // give 2.5 times the ballistic TAMSD. Start at Haff's law (one species, settled by definition).
   const double e = 0.5;
   dsmc::DsmcSetup s;
   s.mixture = model::Mixture({{1, 1, 0.1}});
@@ -100,8 +100,8 @@ TEST_CASE("TAMSD of a cooling gas follows the settled-state model in the ballist
     std::printf("cooling TAMSD lag %g: DSMC %.4g +- %.2g, model %.4g (rel %+.3f)\n", s.times[l], r.tamsd.mean[l], r.tamsd.err[l], th,
                 r.tamsd.mean[l] / th - 1);
     // Ballistic: ⟨v²⟩ averaged over the window; the model's Haff τ0 lacks the Sonine factor 1 + 3a₂/16
-    // (1%) and the start grid's trapezoid errs by ~1e-4 (its ratio 1.027 per start): 1.1% plus 4σ. Regression: the
-    // average used to stop at the grid's last start below 𝒯 − Δ (972.7 for 999.99) and came out 2.7% high.
+    // (1%) and the start grid's trapezoid errs by ~1e-4 (its ratio 1.027 per start): 1.1% plus 4σ. An
+    // average that stopped at the grid's last start below 𝒯 − Δ (972.7 for 999.99) would come out 2.7% high.
     CHECK(std::abs(r.tamsd.mean[l] - th) < 0.011 * th + 4 * r.tamsd.err[l]);
   }
 }

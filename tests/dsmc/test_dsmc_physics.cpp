@@ -10,11 +10,11 @@
 #include "dsmc/event_loop.hpp"
 #include "dsmc/selectors.hpp"
 #include "model/enskog.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/initial_state.hpp"
-#include "theory/msd.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/initial_state.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 using namespace granmix;
 using namespace granmix::dsmc;
@@ -49,7 +49,7 @@ TEST_CASE("elastic gas: collision frequency 4 sqrt(pi) n sigma^2 sqrt(T/m) for e
 }
 
 TEST_CASE("elastic binary: collisions per species pair against nu_ki", "[dsmc]") {
-  // ν_ki = 2√(2π) n_i σ_ki² √(T_k/m_k + T_i/m_i) (physics.md §1).
+  // ν_ki = 2√(2π) n_i σ_ki² √(T_k/m_k + T_i/m_i) (docs/physics.md §1).
   const std::vector<model::Species> sp = {{1, 1, 0.1}, {10, 2, 0.05}};
   for (Method m : {Method::direct, Method::lowrank, Method::bird, Method::bird_global}) {
     DsmcSetup s = setup(sp, 1.0, {8000, 4000}, {3.0}, 8, m);
@@ -216,7 +216,7 @@ TEST_CASE("Haff's law with the first-Sonine cooling rate - eps = 0.9", "[dsmc]")
   const double e = 0.9;
   DsmcSetup s = setup({{1, 1, 0.1}}, e, {20000}, {10.0, 50.0, 200.0}, 8);
   const DsmcResult r = run_ensemble(s);
-  // ζ = ζ_Maxwell (1 + 3a₂/16), c = 2a₂ from van Noije–Ernst (physics.md §2, §6).
+  // ζ = ζ_Maxwell (1 + 3a₂/16), c = 2a₂ from van Noije–Ernst (docs/physics.md §2, §6).
   const double c = 32 * (1 - e) * (1 - 2 * e * e) / (81 - 17 * e + 30 * e * e * (1 - e));
   const double tau0 = 3 / (2 * std::sqrt(pi) * (1 - e * e) * 0.1) / (1 + 3 * c / 32);
   for (std::size_t j = 0; j < 3; ++j) {
@@ -240,10 +240,10 @@ TEST_CASE("binary m = 1 - 100 of one material - eps = 0.5: temperature ratio set
   const double ratio_err = ratio * std::hypot(r.T.err[0] / r.T.mean[0], r.T.err[1] / r.T.mean[1]);
   std::printf("binary settled T2/T1: DSMC %.4f +- %.4f, theory (Maxwellian) %.4f, rel %.4f\n", ratio, ratio_err, theory_ratio,
               ratio / theory_ratio - 1);
-  // The issue asks for 2%; measured −2.2% with a statistical error of ~0.3%. DSMC solves the
+  // Measured −2.2% with a statistical error of ~0.3%. DSMC solves the
   // Boltzmann equation exactly, the theory closes it with Maxwellians (v1 Eq. A2): the gap is that
-  // closure's model error (the first-Sonine γ of the Sonine issue should close most of it). Stated
-  // model tolerance 3%: the measured gap plus four standard errors.
+  // closure's model error (the first-Sonine γ should close most of it). Model tolerance 3%: the measured
+  // gap plus four standard errors.
   CHECK(std::abs(ratio / theory_ratio - 1) < 0.03);
 }
 
@@ -275,7 +275,7 @@ TEST_CASE("elastic binary: temperatures stay put and cumulants stay 0", "[dsmc]"
   CHECK((r.T.mean[0] * 8000 + r.T.mean[1] * 4000) / 12000 == Approx(1.0).epsilon(1e-12));  // energy conserved
 }
 
-TEST_CASE("impurity with equal temperatures (physics.md section 7) keeps T1 = T2", "[dsmc]") {
+TEST_CASE("impurity with equal temperatures (docs/physics.md section 7) keeps T1 = T2", "[dsmc]") {
   // x1 -> 0 with (σ12/σ22)^4 = μ(1+μ)/2: w = 2 gives μ = m1/m2 = 2.721; Maxwellian theory γ = 1.
   DsmcSetup s = setup({{2.721, 2, 0.001}, {1, 1, 0.1}}, 0.5, {400, 40000}, {20.0, 200.0}, 8);
   const DsmcResult r = run_ensemble(s);
@@ -318,7 +318,7 @@ TEST_CASE("time-step scheme (MG Sec. 3) agrees with the event-driven loop for ev
     return run_ensemble(s);
   };
   const DsmcResult ed = run(Method::direct, 0.0);
-  // physics.md §7 expects an O(Δt) bias of c. With velocities updated collision by collision inside a
+  // docs/physics.md §7 expects an O(Δt) bias of c. With velocities updated collision by collision inside a
   // step and acceptance at the current |g| (as MG describe), only the candidate count is discretised,
   // and no bias is measurable down to the statistical error (±0.003 on c) even at Δt = 10 λ/v0.
   for (double factor : {10.0, 1.0, 3e-3}) {

@@ -8,7 +8,7 @@
 #include "dsmc/ensemble.hpp"
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/sonine_hcs.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
 
 using namespace granmix;
 
@@ -32,9 +32,9 @@ TEST_CASE("HCS of MG Figs. 4-5: gamma within 1% and c within the first-Sonine mo
     std::printf("MG mu=%g delta=%g: gamma %.4f +- %.4f vs Sonine %.4f (rel %+.4f); c1 %.4f +- %.4f vs %.4f; c2 %.4f +- %.4f vs %.4f\n",
                 p.mu, p.delta, gamma, gerr, th.gamma(), gamma / th.gamma() - 1, r.cumulant.mean[0], r.cumulant.err[0], th.c[0],
                 r.cumulant.mean[1], r.cumulant.err[1], th.c[1]);
-    CHECK(std::abs(gamma / th.gamma() - 1) < 0.01);  // the issue's bound (statistical error ~0.4%)
+    CHECK(std::abs(gamma / th.gamma() - 1) < 0.01);  // a 1% bound (statistical error ~0.4%)
     // First Sonine overestimates the cumulants at strong dissipation (one species, α = 0.5: DSMC
-    // c ≈ 0.094 against 0.105; physics.md §6): model error 0.02 (twice that, for the mixture), plus 4σ.
+    // c ≈ 0.094 against 0.105; docs/physics.md §6): model error 0.02 (twice that, for the mixture), plus 4σ.
     for (std::size_t k = 0; k < 2; ++k) CHECK(std::abs(r.cumulant.mean[k] - th.c[k]) < 0.02 + 4 * r.cumulant.err[k]);
   }
 }

@@ -1,7 +1,7 @@
-// Error bars that mean what they say (issue 11): over many independent seeds, the scatter of a DSMC
+// Error bars that mean what they say: over many independent seeds, the scatter of a DSMC
 // value must match the standard error it reports. Derived values (⟨T⟩, ratios, γ, MSD-increment D
 // ratios) take their errors from the jackknife over replicas (dsmc/ensemble.hpp); propagation "as if
-// independent" put the ⟨T⟩ error of v2 Fig. 6 twelve times too high.
+// independent" would put the ⟨T⟩ error of v2 Fig. 6 twelve times too high.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +13,7 @@
 #include "dsmc/scene_dsmc.hpp"
 #include "fresh_dir.hpp"
 #include "model/scene.hpp"
+#include "theory/scene_theory.hpp"
 
 using namespace granmix;
 
@@ -39,7 +40,7 @@ gamma = true
 quick = { particles = 1200, replicas = 4 }
 paper = { particles = 1200, replicas = 4 }
 )";
-  return model::load_scene(f.string());
+  return theory::load_scene(f.string());
 }
 
 struct Column {
@@ -60,7 +61,7 @@ TEST_CASE("reported DSMC errors match the scatter over 40 seeds within 25% (T, <
   const std::vector<Column> columns = {{"T", 2}, {"T", 0}, {"msd", 1}, {"msd_ratio", 3}, {"gamma", 0}};
   const std::size_t seeds = 40;
   std::vector<std::vector<double>> value(columns.size()), err2(columns.size());
-  std::vector<double> naive2;  // ⟨T⟩'s error as the old propagation gave it: Σ x_k² err_k², as if independent
+  std::vector<double> naive2;  // ⟨T⟩'s error propagated as if the species were independent: Σ x_k² err_k²
   for (std::size_t seed = 1; seed <= seeds; ++seed) {
     const model::Table t = dsmc::run_scene_dsmc(s, quick(seed)).table;
     const int sc = t.column("species"), T = t.column("T");
@@ -85,13 +86,13 @@ TEST_CASE("reported DSMC errors match the scatter over 40 seeds within 25% (T, <
     for (double x : value[c]) v += (x - m) * (x - m) / double(seeds - 1);
     for (double x : err2[c]) e += x / double(seeds);
     // Observed standard deviation of the 40 estimates against the RMS reported error; the observed
-    // one is itself uncertain by 1/√(2·39) = 11%, so 25% is a 2.2σ bound. The old propagation gave
-    // ⟨T⟩ errors several times too large: far outside it.
+    // one is itself uncertain by 1/√(2·39) = 11%, so 25% is a 2.2σ bound. Propagation as if independent
+    // gives ⟨T⟩ errors several times too large: far outside it.
     const double ratio = std::sqrt(v) / std::sqrt(e);
     std::printf("error bars, %s[%d]: observed scatter / reported error = %.3f\n", columns[c].name, columns[c].species, ratio);
     CHECK(std::abs(ratio - 1.0) < 0.25);
     if (columns[c].name == std::string("T") && columns[c].species == 0) {
-      // The check can fail: the propagation this replaced misses the anticorrelation of species
+      // The check can fail: propagation as if independent misses the anticorrelation of species
       // temperatures (they trade energy) and lands outside the 25% band for the same runs.
       double n = 0.0;
       for (double x : naive2) n += x / double(seeds);
@@ -128,7 +129,7 @@ at = [0.5]
 quick = { particles = 1000, replicas = 8 }
 paper = { particles = 1000, replicas = 8 }
 )";
-  const model::Scene s = model::load_scene(f.string());
+  const model::Scene s = theory::load_scene(f.string());
   model::Scene last = s;  // the same runs, γ of the last sample alone
   last.times = {s.times.back()};
   const std::size_t seeds = 40;

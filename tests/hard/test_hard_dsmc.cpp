@@ -1,4 +1,4 @@
-// Hard cases of the DSMC (issue 6): mass ratio 1e4, ε = 0.01 and exactly 1, t = 1e12, 1e5 species,
+// Hard cases of the DSMC: mass ratio 1e4, ε = 0.01 and exactly 1, t = 1e12, 1e5 species,
 // viscoelastic impacts where the series fails, Enskog n* = 0.5, single-particle species, species
 // without particles. Each gives finite, checked results or a clear error naming the limit.
 #include <catch2/catch.hpp>
@@ -12,8 +12,8 @@
 #include "dsmc_fixtures.hpp"
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 using namespace granmix;
 using namespace granmix::dsmc;
@@ -79,7 +79,7 @@ TEST_CASE("eps = 0.01: finite - monotone - Haff within the first-Sonine model er
   const double e = 0.01;
   DsmcSetup s = test::dsmc_setup({{1, 1, 0.1}}, e, {20000}, {1.0, 10.0, 100.0, 1000.0}, 8);
   const DsmcResult r = run_ensemble(s);
-  // Haff's law with the first-Sonine cooling rate (physics.md §2, §6): c = 0.392 at ε = 0.01, a
+  // Haff's law with the first-Sonine cooling rate (docs/physics.md §2, §6): c = 0.392 at ε = 0.01, a
   // 3.7% correction of ζ; at such strong dissipation the first Sonine is itself off by a few
   // percent in the rate (a₂ from DSMC is smaller), so the late T (∝ 1/ζ²) may differ by ~2×that.
   const double c = 32 * (1 - e) * (1 - 2 * e * e) / (81 - 17 * e + 30 * e * e * (1 - e));

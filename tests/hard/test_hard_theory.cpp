@@ -5,15 +5,15 @@
 #include <cstdio>
 
 #include "model/errors.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/msd.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine_cooling.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/tamsd.hpp"
-#include "theory/tracer_limit.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine_cooling.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/rates/tracer_limit.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -132,8 +132,8 @@ TEST_CASE("kinetic-converged: a viscoelastic gas has no settled memory (refused,
 }
 
 TEST_CASE("mass ratio 1e3 and 1e4, a rare heavy species: the Sonine HCS at orders 2, 3 and 4 is found, first-Sonine cooling rates equal there", "[theory][hard]") {
-  // The heavy species' rows of the cumulant systems carry powers of λ₂ = m₂/(2T₂), ~1e6–1e8 times the gas's: before
-  // the rows were equilibrated (equilibrated_solve.hpp) `granmix hcs` refused these regular systems as singular.
+  // The heavy species' rows of the cumulant systems carry powers of λ₂ = m₂/(2T₂), ~1e6–1e8 times the gas's: without
+  // equilibrating the rows (equilibrated_solve.hpp) these regular systems would be refused as singular.
   // Checked: every number finite, and the first-Sonine cooling rates equal at its ratios (MG Eq. 45). Finite is not
   // right: the light gas's c₁ comes out 36.8 at 1:1e3 (first Sonine) where the heavy grains hold 80% of the energy,
   // the expansion's breakdown, printed by the test and `granmix hcs`; order 4 is found at 1:1e3 (T₂/T₁ 5484 against
@@ -170,8 +170,8 @@ TEST_CASE("mass ratio 1e3 and 1e4, a rare heavy species: the Sonine HCS at order
 
 TEST_CASE("mass ratio 1e4 intruder in the tracer limit: its TAMSD is finite, positive and grows with the lag", "[theory][hard]") {
   // Its velocity persists over ~1e3 gas times, and the increments' own rounding (differences of exponentials) stops
-  // the TAMSD quadrature near 1.3e-9 relative: GSL reported a roundoff error and every tracer scene of this intruder
-  // exited 3. Accepted now while the error estimate stays below 1e-7 (theory/tamsd.cpp).
+  // the TAMSD quadrature near 1.3e-9 relative, where GSL reports a roundoff error; the result is accepted while the
+  // error estimate stays below 1e-7 (theory/histories/tamsd.cpp), so the tracer scenes of this intruder do not exit 3.
   const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {1e4, std::cbrt(1e4), 1e-5}}, 0.5);
   const TracerLimit t = tracer_limit(r);
   double previous = 0.0;
@@ -185,16 +185,15 @@ TEST_CASE("mass ratio 1e4 intruder in the tracer limit: its TAMSD is finite, pos
 
 TEST_CASE("kinetic-converged tracer form beyond its speed grid's mass ratio: a clear error naming the limit", "[theory][hard]") {
   // Each kick is ~m1/m2 of the intruder's thermal speed: from m2/m1 ~ 500 the grid's θ jumps by 30-50% from pass to pass
-  // (at 1e4 it once settled by chance). The level refuses with the mass ratio and the limit, and exits 3 (solver).
+  // (a θ that settles there does so by chance). The level refuses with the mass ratio and the limit, and exits 3 (solver).
   const CollisionRates r = test::constant_rates({{1, 1, 0.1}, {500, std::cbrt(500.0), 1e-5}}, 0.5);
   const auto level = make_theory_level("kinetic-converged");
   CHECK_THROWS_WITH(level->tracer(r), Catch::Contains("mass ratio 500") && Catch::Contains("m2/m1 = 300"));
   CHECK_THROWS_AS(level->tracer(r), granmix::NumericalError);
   // The kinetic level's tracer form has no grid: finite there.
   CHECK(std::isfinite(make_theory_level("kinetic")->tracer(r).theta));
-  // At m2/m1 = 3000 the grid's θ once settled by chance (moving by 60% with a coarser grid), and the level refused it by
-  // its 10% share of the gas's energy budget instead; since the stationary solves keep the drift's outflow term
-  // (2026-12-05) it does not settle, and the refusal names the mass ratio and the limit as at 500. At 300 (5.5%) they pass.
+  // At m2/m1 = 3000 the grid's θ does not settle either (the stationary solves keep the drift's outflow term), and the
+  // refusal names the mass ratio and the limit as at 500. At 300 (5.5%) they pass.
   const CollisionRates r3000 = test::constant_rates({{1, 1, 0.1}, {3000, std::cbrt(3000.0), 1e-9}}, 0.5);
   CHECK_THROWS_WITH(level->tracer(r3000), Catch::Contains("mass ratio 3000") && Catch::Contains("m2/m1 = 300"));
   CHECK_THROWS_AS(level->tracer(r3000), granmix::NumericalError);

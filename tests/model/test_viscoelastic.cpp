@@ -1,4 +1,4 @@
-// Viscoelastic restitution ε(y): the exact contact problem against the values of physics.md §5,
+// Viscoelastic restitution ε(y): the exact contact problem against the values of docs/physics.md §5,
 // the table against direct solves, and the series and Padé forms against the exact one.
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -10,7 +10,7 @@
 using namespace granmix::model;
 
 TEST_CASE("exact contact problem reproduces the published values", "[model]") {
-  // physics.md §5 gives six digits; the solver runs at 1e-13, so 1e-6 is the rounding of the list.
+  // docs/physics.md §5 gives six digits; the solver runs at 1e-13, so 1e-6 is the rounding of the list.
   const std::pair<double, double> values[] = {{0.1, 0.988547}, {0.3, 0.902852}, {0.5, 0.760037}, {1.0, 0.393931}, {2.0, 0.093000}};
   for (auto [y, eps] : values) {
     INFO("y = " << y);
@@ -32,7 +32,7 @@ TEST_CASE("exact table matches direct solves to 1e-9", "[model]") {
     worst = std::max(worst, std::abs(restitution_exact(y) - restitution_contact_solve(y)));
   }
   std::printf("viscoelastic table: max |table - direct| = %.3g over [0.0007, 16]\n", worst);
-  CHECK(worst <= 1e-9);  // the bound; measured about 1e-11
+  CHECK(worst <= 1e-9);  // measured about 1e-11
   CHECK(restitution_exact(0.0) == Approx(1.0).margin(1e-12));
 }
 
@@ -40,7 +40,7 @@ TEST_CASE("Padé form within 1e-6 of the exact one for y <= 0.5", "[model]") {
   double worst = 0.0;
   for (double y = 0.0; y <= 0.5; y += 0.005) worst = std::max(worst, std::abs(restitution_pade(y) - restitution_exact(y)));
   std::printf("Padé [3/6]: max |pade - exact| = %.3g for y <= 0.5\n", worst);
-  CHECK(worst <= 1e-6);  // the accuracy physics.md states for this Padé
+  CHECK(worst <= 1e-6);  // the accuracy docs/physics.md states for this Padé
 }
 
 TEST_CASE("truncated series: accurate for small y - parts from the exact curve above y ~ 0.5", "[model]") {

@@ -1,5 +1,5 @@
 #pragma once
-// Random mixtures for the property tests (issue 15): 1–50 species, masses 1e-3–1e3, diameters
+// Random mixtures for the property tests: 1–50 species, masses 1e-3–1e3, diameters
 // 0.1–10, densities 1e-6–0.1 (all log-uniform), ε uniform in (0, 1] with one case in ten elastic,
 // one in five viscoelastic; a viscoelastic mixture keeps only its first few species (8 unless the
 // test says less): each of its pair rates is two adaptive quadratures (collision_moments.cpp),

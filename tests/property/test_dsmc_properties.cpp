@@ -1,4 +1,4 @@
-// Randomized DSMC properties (issue 15), fixed seeds: the event loop conserves momentum to 1e-12
+// Randomized DSMC properties, fixed seeds: the event loop conserves momentum to 1e-12
 // (relative to Σ m|v|) at any ε and kinetic energy to 1e-12 at ε = 1; an ensemble gives the same
 // numbers, bit for bit, on 1 and 2 threads.
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// Randomized physics properties of the kinetic theory (issue 15), 200 mixtures per property from
+// Randomized physics properties of the kinetic theory, 200 mixtures per property from
 // fixed seeds (random_mixtures.hpp):
 //  - the settled ratios make every ξ_k equal to 1e-10 of the rate scale, or the solver says why
 //    (NumericalError naming itself);
@@ -13,11 +13,11 @@
 
 #include "model/errors.hpp"
 #include "random_mixtures.hpp"
-#include "theory/collision_rates.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/msd.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/collision_rates.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/histories/temperature_history.hpp"
 
 using namespace granmix;
 using namespace granmix::theory;
@@ -78,8 +78,8 @@ TEST_CASE("property: settled ratios equalise the cooling rates to 1e-10 or the s
   std::printf("settled ratios: %d solved (worst residual %.2e), %d refused with NumericalError\n", solved, worst, refused);
 }
 
-// Regression: cases 67 and 71 (elastic, 23 and 26 species) failed with CV_CONV_FAILURE under the
-// old automatic GMRES solver (temperature_history.cpp). Viscoelastic mixtures here have at most 3 species: a history to 1e12 with the VACF takes ~5000
+// Cases 67 and 71 (elastic, 23 and 26 species) fail with CV_CONV_FAILURE under unpreconditioned
+// GMRES; the automatic solver takes dense LU there (temperature_history.cpp). Viscoelastic mixtures here have at most 3 species: a history to 1e12 with the VACF takes ~5000
 // right-hand sides of N(N+1)/2 quadrature pairs (8 species: 5 s of CPU each, 40 of them).
 TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD increasing and ballistic at short times", "[property]") {
   test::MixtureSampler sample(15002, 3);
@@ -129,7 +129,7 @@ TEST_CASE("property: temperatures stay positive and finite to t = 1e12 - MSD inc
 // dJ/dt = 3T_k/m_k − J(τ_v,k⁻¹ + ξ_k/2), J(0) = 0, with ξ = 2/(τ₀+t) and a = τ₀/τ_v,k is then solved by
 // J = 3 D_k τ₀/(τ₀+t) · [1 − (1+t/τ₀)^(−a)], i.e. ⟨R²⟩ = 2∫J dt is v2 Eq. (22) exactly (msd_closed).
 // Check 1: the ODE against it at 25 times from 1e-4 of the fastest time to the end, to 1e-6 (CVODE at
-//   rtol 1e-11 over < 1e5 steps; measured below). A decay rate without ξ/2 (physics.md §3) changes
+//   rtol 1e-11 over < 1e5 steps; measured below). A decay rate without ξ/2 (docs/physics.md §3) changes
 //   ⟨R²⟩ by O(ξ τ_v) at t ~ τ_v, a wrong time unit by O(1).
 // Check 2, the late-time law (v2 Eq. 23): between t₁ and t₂ = 10 t₁, the slope Δ⟨R²⟩/Δ ln t differs
 //   from 6 D_k τ₀ by the two corrections of Eq. (22): ln(1+t/τ₀) against ln t, at most τ₀/t₁, and the
@@ -191,7 +191,7 @@ TEST_CASE("property: constant eps < 1 - the MSD is v2 Eq. 22 and grows as 6 D_k 
   CHECK(law_species > species / 2);
 }
 
-// Viscoelastic gas at late times (physics.md §2–3): T ∝ t^(−5/3) and ν_k = τ_v,k⁻¹ + ξ_k/2 ∝ √T, so
+// Viscoelastic gas at late times (docs/physics.md §2–3): T ∝ t^(−5/3) and ν_k = τ_v,k⁻¹ + ξ_k/2 ∝ √T, so
 // once J follows its quasi-static value 3T_k/(m_k ν_k) the MSD grows as ∫ T/ν dt ∝ t^(1/6). The
 // decade exponent p = log10(Δ⟨R²⟩[10t₁, 100t₁] / Δ⟨R²⟩[t₁, 10t₁]) then equals 1 − q_k + r_k with the
 // measured exponents q_k = −Δln T_k/Δln t, r_k = −Δln ν_k/Δln t over [t₁, 100t₁] (5/3 and 5/6 in the
@@ -202,8 +202,8 @@ TEST_CASE("property: constant eps < 1 - the MSD is v2 Eq. 22 and grows as 6 D_k 
 // reached the late-time regime: where it is below 1/12 (half the 1/6 by which a ln t law, p = 0,
 // would miss) the check discriminates; at least 3/4 of the species must be there (those left out
 // are partners of very different mass whose ratios still drift towards equipartition: T ∝ t^(−1.8)).
-// Regression: at these times the (1 − ε) moment quadrature gave up with GSL "roundoff error"
-// (case 35) before model::restitution_deficit.
+// At these times a (1 − ε) moment quadrature through 1 − restitution() gives up with GSL "roundoff
+// error" (case 35): model::restitution_deficit avoids the cancellation.
 TEST_CASE("property: viscoelastic - the MSD grows as t^(1/6) at late times", "[property]") {
   test::MixtureSampler sample(15006, 3);
   int checked = 0, species = 0, late = 0;

@@ -18,7 +18,7 @@ inline Vec axpy(double s, const Vec& x, const Vec& y) { return {y[0] + s * x[0],
 // velocity stays), collisions with partner i at the rate n_i σ_ki² χ_ki ∫dw f_i(w) π|u − w| with
 // the Maxwellian f_i of the reference time, u′ = u − μ_ik(1+ε)(g·σ̂)σ̂. The diffusion coefficient at
 // the reference time is D = (1/3)∫₀^∞⟨u(0)·u(τ)⟩dτ (present velocity against past ones,
-// physics-beyond §2). By stationarity ⟨u(s)·∫_{s−U}^{s}u⟩ = ⟨u(s)·∫_s^{s+U}u⟩ = ∫₀^U⟨u(0)·u(τ)⟩dτ, so
+// docs/physics-beyond.md §2). By stationarity ⟨u(s)·∫_{s−U}^{s}u⟩ = ⟨u(s)·∫_s^{s+U}u⟩ = ∫₀^U⟨u(0)·u(τ)⟩dτ, so
 // D is estimated as ⟨u(s)·[X(s+U) − X(s−U)]⟩/6 with X = ∫u ds, U = 10 first-Sonine correlation times
 // (truncation e^{−10} ≈ 5e-5 of D for an exponential decay; 100 batch means give the error).
 struct Partner {

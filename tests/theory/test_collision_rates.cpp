@@ -8,8 +8,8 @@
 #include <random>
 
 #include "model/enskog.hpp"
-#include "theory/collision_rates.hpp"
-#include "theory/diffusion.hpp"
+#include "theory/rates/collision_rates.hpp"
+#include "theory/rates/diffusion.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -69,7 +69,7 @@ TEST_CASE("one species: zeta - tau_v and tau0/tau_v(0) = (1+eps)/(1-eps)", "[the
   for (double e : {0.1, 0.5, 0.9, 0.99}) {
     const double n = 0.1, s = 1.3, m = 2.0, T = 0.7;
     const CollisionRates r(model::Mixture({{m, s, n}}), model::Restitution::constant(1, e), model::dilute_contact_values(1));
-    // physics.md §2, §3 closed forms: rounding only.
+    // docs/physics.md §2, §3 closed forms: rounding only.
     CHECK(r.xi(0, 0, T, T) == Approx(4.0 / 3 * std::sqrt(pi) * (1 - e * e) * n * s * s * std::sqrt(T / m)).epsilon(1e-14));
     CHECK(r.inv_tau_v(0, 0, T, T) == Approx(2 * std::sqrt(pi) / 3 * (1 + e) * (1 + e) * n * s * s * std::sqrt(T / m)).epsilon(1e-14));
     const SettledDiffusion d = diffusion_at(r, {1.0});

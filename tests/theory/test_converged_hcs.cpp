@@ -1,4 +1,4 @@
-// The mixture's HCS without the Sonine truncation of its own distributions (theory/converged_hcs.hpp): an exact limit
+// The mixture's HCS without the Sonine truncation of its own distributions (theory/grid/converged_hcs.hpp): an exact limit
 // (elastic: equal temperatures, Maxwellian), the tracer limit's intruder solved by the other code path
 // (tracer_temperature.hpp, ζ given instead of found), and MG Figs. 4–5's DSMC.
 #include <catch2/catch.hpp>
@@ -13,13 +13,13 @@
 
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/converged_hcs.hpp"
-#include "theory/converged_hcs_diffusion.hpp"
-#include "theory/partner_axial_shape.hpp"
-#include "theory/theory_level.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/tracer_speed_grid.hpp"
-#include "theory/tracer_temperature.hpp"
+#include "theory/grid/converged_hcs.hpp"
+#include "theory/grid/converged_hcs_diffusion.hpp"
+#include "theory/grid/partner_axial_shape.hpp"
+#include "theory/levels/level_catalogue.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
+#include "theory/grid/speed_grid.hpp"
+#include "theory/grid/tracer_temperature.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -109,10 +109,10 @@ TEST_CASE("converged HCS: an elastic mixture settles at equal temperatures, Maxw
 
 TEST_CASE("converged distributions: an elastic mixture's Phi is the Maxwellian at every speed, to the grid's error", "[theory]") {
   // MG Figs. 3, 7's mixture (μ = 4, δ = 1/2) elastic: Φ_k(v*) = (λ_k/π)^(3/2) exp(−λ_k v*²) exactly. The solved density's
-  // pointwise error (converged_distribution: w_z by panels cut at the integrand's kinks), measured 2026-12-07, species
+  // pointwise error (converged_distribution: w_z by panels cut at the integrand's kinks), species
   // 1 / 2: ≤ 2.1e-4 / 2.4e-4 from 0.05 to 0.2 thermal widths, ≤ 9.1e-5 / 9.0e-5 from 0.2 to one width, ≤ 6.7e-6 /
   // 1.3e-5 from one to two, ≤ 1.7e-4 from two to 5.5 (the knots' and the domain's, the same with any rule). The
-  // 256-point Gauss–Hermite rule of stop 51 (1.4% / 5.3%, 6.8e-4 / 2.4e-3, 8.5e-5 / 3.0e-4) fails the first three
+  // 256-point Gauss–Hermite rule (1.4% / 5.3%, 6.8e-4 / 2.4e-3, 8.5e-5 / 3.0e-4) fails the first three
   // ranges, the 64-point one (13.7% / 75% over MG Fig. 3's first bin) every one; the panels cut at the sphere's pass
   // through 0 alone (1.9e-3 / 5.2e-3 in the first) fail it too. A density read at the wrong v₀ (2% off) or with the
   // wrong normalisation misses by several % at two widths.
@@ -135,9 +135,9 @@ TEST_CASE("converged distributions: an elastic mixture's Phi is the Maxwellian a
 }
 
 TEST_CASE("converged distributions: the densities fall smoothly (the drift's outflow term at the grid's edge)", "[theory]") {
-  // MG Fig. 7's mixture at α = 0.3 and 0.5. Without the outflow term (before 2026-12-05) species 1's stationary density
-  // alternated in sign from ~3.5 thermal widths on (P(v*) = −0.28 at 1.5, +1.26 at 2.5, where the Maxwellian is 0.07 and
-  // 5e-7) while its moments were right. Now P > 0 up to 5.5 widths (min P/v*² ≥ 6.9e-5 measured) and Φ falls by at least
+  // MG Fig. 7's mixture at α = 0.3 and 0.5. Without the outflow term species 1's stationary density alternates in sign
+  // from ~3.5 thermal widths on (P(v*) = −0.28 at 1.5, +1.26 at 2.5, where the Maxwellian is 0.07 and 5e-7) while its
+  // moments are right. With it P > 0 up to 5.5 widths (min P/v*² ≥ 6.9e-5 measured) and Φ falls by at least
   // 2.7% per twentieth of a width from half a width to five (measured: ≤ 0.973 per step).
   for (double alpha : {0.3, 0.5}) {
     const SettledHcs d = converged_distribution(mg(4.0, 0.5, alpha), DistributionVariant::solved);
@@ -152,10 +152,10 @@ TEST_CASE("converged distributions: the densities fall smoothly (the drift's out
 
 TEST_CASE("converged HCS: the partners' truncation, computed with their full densities (v1 Fig. 4, n2 = 0.01, 0.03)", "[theory]") {
   // partner_truncation is the change when every partner is seen through its full solved density (its rest beyond
-  // 1 + a₂S₂ + a₃S₃ as point masses) instead of a₂, a₃. Reference: a separate prototype (2026-12-05) that solved the
+  // 1 + a₂S₂ + a₃S₃ as point masses) instead of a₂, a₃. Reference: a separate prototype that solves the
   // main HCS itself with full partners — its own spline evaluation, rests from the densities at 4 Gauss points per knot
-  // interval, settled to 1e-7 — gave T₂/T₁ 169.3503 → 166.9747 (−1.403%) at n₂ = 0.01 and 78.3191 → 78.1925 (−0.162%)
-  // at 0.03. The check's variant settles to ~1% of its change, so 3% here; the former estimate (partners through a₂
+  // interval, settled to 1e-7 — gives T₂/T₁ 169.3503 → 166.9747 (−1.403%) at n₂ = 0.01 and 78.3191 → 78.1925 (−0.162%)
+  // at 0.03. The check's variant settles to ~1% of its change, so 3% here; the cruder estimate (partners through a₂
   // alone: 3.15%, 0.42%) and no rest at all (0) both fail.
   for (const auto& [n2, want] : {std::pair{0.01, 0.01403}, std::pair{0.03, 0.00162}}) {
     const ConvergedHcs c = converged_hcs(test::constant_rates({{1.0, 1.0, 0.1}, {100.0, 1.0, n2}}, 0.5), true);
@@ -186,9 +186,9 @@ TEST_CASE("converged HCS: a rare species is the tracer limit's intruder in the c
 
 TEST_CASE("converged HCS: MG gamma within 0.3% of DSMC at all 18 points of Figs. 4-5", "[theory][slow]") {
   // DSMC: the mean of the paper-fidelity runs, seeds 1–3, of mg-fig04-mu* and mg-fig05-delta* (2e4 particles x 64
-  // replicas each; docs/paper-fidelity.md; σ of the mean ≈ 0.1%), as scripts/mg_gamma_sonine_orders.py holds them.
+  // replicas each; docs/validation.md; σ of the mean ≈ 0.1%), as scripts/mg_gamma_sonine_orders.py holds them.
   // The first Sonine (MG App. A) is within 0.3% at 15 of the 18 (worst −0.43%, μ = 4, δ = 0.25, α = 0.5), orders 3 and 4
-  // at 15 and 17; issue 12 asks 0.3% at every point. (~17 s: [slow], not under the sanitizers.)
+  // at 15 and 17; the target is 0.3% at every point. (~17 s: [slow], not under the sanitizers.)
   struct Point {
     double mu, delta, gamma[3];
   };
@@ -214,7 +214,7 @@ TEST_CASE("converged HCS: the model error parts of the MG scenes' tolerances", "
   // Not run by ctest (hidden tag): `granmix_tests_theory "[.tolerances]"` prints, at every DSMC point of the scenes
   // judged at the level kinetic-hcs-converged, the two computed parts of γ's and c's model error (converged_hcs.hpp):
   // the grid's (twice the largest change with knots 3/2 apart, the 16-point rule or the domain 9/7 as wide) and the
-  // partners' truncation (full partners against a₂, a₃; the a₃ term's size before 2026-12-05, stop 39). A scene's
+  // partners' truncation (full partners against a₂, a₃). A scene's
   // `relative` is the largest sum over its points (compare/scenes/mg-fig0[245]*.toml). ~2 min.
   struct Scene {
     const char* name;
@@ -285,17 +285,17 @@ TEST_CASE("kinetic-converged-hcs: kinetic-converged's D ratio where the Sonine H
     CHECK(std::abs(shift) < 3e-3);
   }
   // The grid estimate covers the domain's truncation. At n₂ = 0.01 the light species' tail is strongly overpopulated
-  // (a₃ = −0.61): this solver with its domain 10 widths wide instead of 7 (knots as far apart; measured 2026-12-05 —
+  // (a₃ = −0.61): this solver with its domain 10 widths wide instead of 7 (knots as far apart;
   // 8 and 9 widths: γ 0.0059021, 0.0059007) gives γ = 0.00590042 and c₁ = 1.01231, 7.5e-4 and 1.8% from the solve's;
-  // from knots 3/2 apart and the 16-point rule alone the estimate was 9.3e-5 and 0.30% (measured): 8× and 6× short.
-  // Its D₂/D₁ moved by 2e-5 only.
+  // from knots 3/2 apart and the 16-point rule alone the estimate would be 9.3e-5 and 0.30%: 8× and 6× short.
+  // Its D₂/D₁ moves by 2e-5 only.
   const auto [shift, truncation, c] = compare(test::constant_rates({{1.0, 1.0, 0.1}, {100.0, 1.0, 0.01}}, 0.5), "v1 Fig. 4, n2 = 0.01");
   std::printf("v1 Fig. 4, n2 = 0.01: gamma %.8f, c1 %.6f; grid estimate: T %.2e, c %.2e\n", c.hcs.gamma(), c.hcs.c[0], c.grid_change.T, c.grid_change.a2);
   CHECK(c.grid_change.T > std::abs(c.hcs.gamma() / 0.00590042 - 1.0));
   CHECK(c.grid_change.a2 > std::abs(c.hcs.c[0] / 1.01231 - 1.0));
   for (const double eps : {0.2, 0.5, 0.8})
     compare(test::constant_rates({{1.0, 1.0, 0.1}, {100.0, std::cbrt(100.0), 0.1}}, eps), "v1 Fig. 5, eps = " + std::to_string(eps).substr(0, 3));
-  // The level hands the same error on (its own checked state): bo1-fig05's ε = 0.2, 0.72% (the largest of its points).
+  // The level hands the same error on (its own checked state): bo1-fig05's ε = 0.2, 0.40% (the largest of its points).
   const CollisionRates r = test::constant_rates({{1.0, 1.0, 0.1}, {100.0, std::cbrt(100.0), 0.1}}, 0.2);
   const RatioErrorParts p = ratio_error_parts(r, converged_hcs(r, true));
   CHECK(converged->d_ratio_error(r)[1] == Approx(p.grid + p.hcs_partners + p.partners + p.basis).epsilon(1e-6));
@@ -308,7 +308,7 @@ TEST_CASE("kinetic-converged-hcs: the model error parts of the D-ratio scenes' t
   // settled ratio (the judged increments come from the same memory), the largest over the species k > 1: the HCS grid's
   // (twice the largest change with knots 3/2 apart, the 16-point rule or the domain 9/7 as wide), the HCS partners'
   // truncation (partners through their full densities), the tracer problem's partners' (its partners and source
-  // through the solved densities; the a₃ term's size before stop 43), its basis (one function fewer, species k and 1 summed). The scenes judge with the sum per point and species, which the
+  // through the solved densities), its basis (one function fewer, species k and 1 summed). The scenes judge with the sum per point and species, which the
   // level computes itself (theory.tsv column D_ratio_error, error_column); this prints the parts behind it. ~30 s.
   auto v1_binary = [](double sigma2, double n2, double eps) { return test::constant_rates({{1.0, 1.0, 0.1}, {100.0, sigma2, n2}}, eps); };
   auto v1_fig07 = [](double eps) {

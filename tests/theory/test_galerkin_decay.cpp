@@ -1,4 +1,4 @@
-// The converged tracer problem in time (theory/galerkin_decay.hpp): its pair tables against direct assembly, and its
+// The converged tracer problem in time (theory/grid/galerkin_decay.hpp): its pair tables against direct assembly, and its
 // forward VACF ODE against the settled adjoint problem of tracer_diffusion_galerkin.hpp — the MSD of the ODE at
 // settled ratios is the closed form of galerkin_memory at every time, elastic and inelastic.
 #include <catch2/catch.hpp>
@@ -10,11 +10,11 @@
 #include <vector>
 
 #include "model/mixture_generators.hpp"
-#include "theory/galerkin_decay.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/velocity_memory.hpp"
+#include "theory/grid/galerkin_decay.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
+#include "theory/rates/velocity_memory.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -22,7 +22,7 @@ using namespace granmix::theory;
 
 TEST_CASE("converged memory in time: the interpolated pair tables are the direct assembly to 1e-4", "[theory]") {
   // Catmull–Rom on the ln ρ grid (step 1/8, the heavy species' smooth basis 1/6) is third order: 4.2e-5 at worst here
-  // (the light species at T₂/T₁ = 92.1, ρ = 0.92; 4.8e-5 before the tables held each source over √(λ + ρ), 4.3e-4 with
+  // (the light species at T₂/T₁ = 92.1, ρ = 0.92; 4.8e-5 without the flux factor √(λ + ρ) in the tables, 4.3e-4 with
   // its step 1/6); a node off by one or a wrong weight is an error of order the step (~10%), the flux factor taken
   // back at the node's ρ instead of the current one ~5%.
   // bo1-fig05's 1:100 binary at ε = 0.5, off the grid (T ratios not on a node), with partner shapes a₂, a₃.
@@ -44,7 +44,7 @@ TEST_CASE("converged memory in time: a power-law mixture's interpolated operator
   // v1 Fig. 8's power law cut at 16 species (n_k = 0.1 k^-3, m_k = k, σ_k = k^(1/3), ε = 0.5), partner shapes on, at
   // four states between the equal start and the settled ratios (T_k = T_ref,k^s): the steps of galerkin_decay.hpp —
   // 1/8, the smooth bases' 1/6, the coarse pairs' 1/4 — with the tables over √(λ + ρ). Measured 7.6e-6 of each
-  // operator's largest entry (2026-12-06; all at 1/8: 3.8e-6; the smooth bases at 1/5: 1.7e-5, which fails; at 1/8
+  // operator's largest entry (all at 1/8: 3.8e-6; the smooth bases at 1/5: 1.7e-5, which fails; at 1/8
   // without the flux factor 8.8e-6).
   model::PowerLaw p;
   p.n1_particles = 16 * 16 * 16;  // keeps k ≤ 16
@@ -101,14 +101,14 @@ TEST_CASE("converged memory in time: decays of one scene share their pair tables
 }
 
 // [slow]: 31 s under ASan (two 16-species operators assembled directly at two states) for a check of a numerical choice;
-// the sanitizers see the same pair kernel in the other tests of this file (CI's budget, 2026-12-05).
+// the sanitizers see the same pair kernel in the other tests of this file (CI's budget).
 TEST_CASE("converged memory in time: the rare partners' coarse pair rule moves the operator by < 1e-5", "[theory][slow]") {
   // v1 Fig. 8's power law cut at 16 species (n_k = 0.1 k^-3, m_k = k, σ_k = k^(1/3), ε = 0.5): the partners whose share
   // of a species' collisions is below coarse_pair_share (k ≥ 12 or so for every species; 10× that for a species of a
   // smooth basis, x₀ ≥ 1.5: smooth_basis_share_factor) take the 20 × 12 rule. Each
   // species' operator, at the settled state and at the equal start (ρ = m_k/m_i, e^(3.7) from there), partner shapes
   // on, against every pair at its basis's rule (coarse share 0), relative to its largest entry: measured 6.8e-6 worst
-  // (1.4e-6 before the smooth bases' factor, 2026-12-06; with a factor 30: 1.8e-5, which fails);
+  // (1.4e-6 without the smooth bases' factor; with a factor 30: 1.8e-5, which fails);
   // every pair at the coarse rule (share 1.1): 3.5e-4, which fails.
   model::PowerLaw p;
   p.n1_particles = 16 * 16 * 16;  // keeps k ≤ 16
@@ -135,7 +135,7 @@ TEST_CASE("converged memory in time: the rare partners' coarse pair rule moves t
 TEST_CASE("converged memory in time: viscoelastic tables (ln theta_k and ln rho) are the direct assembly to 1e-4", "[theory]") {
   // v1 Fig. 10's law on its 1:100 binary, at temperatures six decades apart, off both grids; the grid in ln θ_k (step 2)
   // carries ε(u), which varies as θ^(1/10) (at step 1 it added ≤ 1.5e-6). Here with 4 functions (the tables' machinery
-  // at half the cost): worst 1.5e-5 (2.0e-5 before the tables held each source over √(λ + ρ); 2.2e-5 at step 1). With the level's 8, measured once (step 1): ≤ 1.6e-5 except
+  // at half the cost): worst 1.5e-5 (2.0e-5 without the flux factor √(λ + ρ); 2.2e-5 at step 1). With the level's 8 (step 1): ≤ 1.6e-5 except
   // the light species at T₂/T₁ = 61.3, 5.5e-4 at every T₁ (the higher functions are rougher in ρ there; at constant ε
   // the same ratio gives < 1e-4). A wrong θ scaling (the tables are stored over √(2θ_k)) or a node off by one is an
   // error of order 1e-2 to 1.

@@ -13,12 +13,12 @@
 
 #include "model/enskog.hpp"
 #include "model/gsl_setup.hpp"
-#include "theory/diffusion.hpp"
-#include "theory/msd.hpp"
-#include "theory/velocity_memory.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/tamsd.hpp"
-#include "theory/tracer_limit.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/rates/velocity_memory.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/rates/tracer_limit.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -45,15 +45,15 @@ TEST_CASE("Eq. (17) equals the closed form for settled ratios to 1e-6 - and so d
         worst_vacf = std::max(worst_vacf, std::abs(h.msd_vacf(t, k) / closed - 1));
       }
     std::printf("%zu species: Eq. (17) vs closed %.2e, VACF ODE vs closed %.2e\n", r.size(), worst17, worst_vacf);
-    CHECK(worst17 <= 1e-6);    // the issue's bound; quadrature asks 1e-9, CVODE 1e-11
+    CHECK(worst17 <= 1e-6);    // quadrature asks 1e-9, CVODE 1e-11
     CHECK(worst_vacf <= 1e-6);  // τ̂ is constant in the settled state: the two forms coincide
   }
 }
 
 namespace {
 
-// v1 Eq. (17) species by species, each node's T and τ_v,k⁻¹ computed afresh (inv_tau_v_species): the computation
-// msd_eq17 made before it kept nodes, the same quadrature (QAG, 21 points, the same requested error).
+// v1 Eq. (17) species by species, each node's T and τ_v,k⁻¹ computed afresh (inv_tau_v_species): msd_eq17 without its
+// kept nodes, the same quadrature (QAG, 21 points, the same requested error).
 double eq17_afresh(const TemperatureHistory& h, std::size_t k, double t) {
   struct Integrand {
     const TemperatureHistory& h;
@@ -153,7 +153,7 @@ TEST_CASE("viscoelastic gas: local MSD slope tends to 1/6", "[theory]") {
 }
 
 TEST_CASE("closed forms: elastic limit and long-time prefactor", "[theory]") {
-  // One species: 6 D(0) τ₀ = 27/(2π(1+ε)³(1−ε) n² σ⁴) (physics.md §3); algebra, rounding only.
+  // One species: 6 D(0) τ₀ = 27/(2π(1+ε)³(1−ε) n² σ⁴) (docs/physics.md §3); algebra, rounding only.
   for (double e : {0.2, 0.8}) {
     const CollisionRates r = test::constant_rates({{1, 1, 0.1}}, e);
     const SettledDiffusion d = diffusion_at(r, {1.0});

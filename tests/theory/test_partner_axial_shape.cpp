@@ -1,4 +1,4 @@
-// A species' full density as the tracer problem sees it (theory/partner_axial_shape.hpp): on a density of known
+// A species' full density as the tracer problem sees it (theory/grid/partner_axial_shape.hpp): on a density of known
 // Sonine shape it must give back the Sonine forms the tracer problem uses without it — E[f/f_M | c_z] = 1 + a₂S₂ᵃˣ(y)
 // + a₃S₃ᵃˣ(y), whatever the density's speed scale, and the tracer problem's D ratio of the Sonine shapes. (The source
 // r alone differs in its high basis functions, whose x⁶ reaches past the density's 7 widths where the Sonine form
@@ -8,11 +8,11 @@
 #include <cmath>
 #include <numbers>
 
-#include "theory/converged_hcs_diffusion.hpp"
-#include "theory/partner_axial_shape.hpp"
-#include "theory/sonine_polynomials.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
-#include "theory/tracer_speed_grid.hpp"
+#include "theory/grid/converged_hcs_diffusion.hpp"
+#include "theory/grid/partner_axial_shape.hpp"
+#include "theory/sonine/sonine_polynomials.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
+#include "theory/grid/speed_grid.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix::theory;
@@ -63,8 +63,8 @@ TEST_CASE("the D ratios' partners' truncation: full densities of Sonine shape gi
   // (partner_axial_shape.hpp: partners' axial shapes, the species' own source) must give the D₂/D₁ of the Sonine
   // shapes: measured 5e-7 (the splines' fit and the density's domain, 7 widths, which cuts the source's
   // high basis functions' tails and moves D by nothing measurable). With the solved densities themselves it moves by
-  // +0.66% (measured 2026-12-05: the truncation the level's model error carries; the a₃ term's size, its estimate
-  // before, was 1.47%), so the bound discriminates by four orders.
+  // +0.66% (the truncation the level's model error carries; the a₃ term's size, a cruder estimate of it, is 1.47%),
+  // so the bound discriminates by four orders.
   const CollisionRates r = granmix::test::constant_rates({{1.0, 1.0, 0.1}, {100.0, 1.0, 0.01}}, 0.5);
   const ConvergedHcs c = converged_hcs(r, false);
   SettledHcs sonine = c;

@@ -1,4 +1,4 @@
-// The Galerkin pair integrals' per-point loops (theory/point_kernels.hpp) give the same numbers in every build: each
+// The Galerkin pair integrals' per-point loops (theory/grid/point_kernels.hpp) give the same numbers in every build: each
 // is checked bit for bit against a plain scalar loop that does the documented operations in the documented order (this
 // file is compiled without FMA contraction, tests/CMakeLists.txt), and row_products' baseline (SSE2) and AVX2 builds
 // against each other. The elementwise loops run whichever build this processor selects (AVX-512, AVX2 or baseline).
@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "theory/point_kernels.hpp"
+#include "theory/grid/point_kernels.hpp"
 
 using namespace granmix::theory;
 

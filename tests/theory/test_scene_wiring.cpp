@@ -11,9 +11,9 @@
 
 #include "model/enskog.hpp"
 #include "model/scene.hpp"
-#include "theory/collision_rates.hpp"
+#include "theory/rates/collision_rates.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -25,7 +25,7 @@ TEST_CASE("a dense scene's theory rates carry the Carnahan-Starling chi: two ide
   // identical species the Enskog contact value is Carnahan–Starling, χ = (1 − φ/2)/(1 − φ)³,
   // φ = π n σ³/6 with the total n (MG Eq. 26 with equal sizes). Every rate of the dense gas is the dilute rate times χ, so a wrong χ
   // anywhere on that path shows here at the size of the error (ratios of rates would hide it).
-  const model::Scene s = model::load_scene_text(R"([scene]
+  const model::Scene s = theory::load_scene_text(R"([scene]
 name = "dense-identical-species"
 [mixture]
 species = [{ mass = 1, diameter = 1, density = 0.05 }, { mass = 1, diameter = 1, density = 0.05 }]
@@ -53,9 +53,9 @@ times = [50, 100]
 }
 
 TEST_CASE("MG time unit: t0 = lambda11 / v01(0), lambda11 = 1/(sqrt(2) pi n1 sigma11^2), v01 = sqrt(2 T1/m1) - mg-fig01", "[theory]") {
-  // physics.md §MG (Montanero & Garzó 2002, Sec. IV): times in units of the mean free time of species 1
+  // docs/physics.md §MG (Montanero & Garzó 2002, Sec. IV): times in units of the mean free time of species 1
   // at the start. mg-fig01 starts at equal temperatures, ⟨T⟩ = 1, so T1(0) = 1.
-  const model::Scene s = model::load_scene(std::string(GRANMIX_SOURCE_DIR) + "/compare/scenes/mg-fig01.toml");
+  const model::Scene s = theory::load_scene(std::string(GRANMIX_SOURCE_DIR) + "/compare/scenes/mg-fig01.toml");
   const model::Species& a = s.mixture[0];
   const double lambda11 = 1.0 / (std::sqrt(2.0) * pi * a.density * a.diameter * a.diameter);
   const double t0 = lambda11 / std::sqrt(2.0 * 1.0 / a.mass);
@@ -69,7 +69,7 @@ TEST_CASE("a sweep's points on two threads give the one-thread table, rows in sw
   // point is computed wholly on one thread and its rows go in at the point's place, so the table must be the
   // one-thread table bit for bit (granmix's reproducibility rule) with x increasing. The converged level (its memo,
   // its Galerkin pair problems, the increment history with its own pair tables) on a binary, 5 points of ε.
-  const model::Scene s = model::load_scene_text(R"([scene]
+  const model::Scene s = theory::load_scene_text(R"([scene]
 name = "sweep-threads"
 [mixture]
 species = [{ mass = 1, diameter = 1, density = 0.1 }, { mass = 4, diameter = 1.5874, density = 0.1 }]
@@ -109,10 +109,10 @@ TEST_CASE("kinetic-converged-hcs's increments carry DSMC's start: a rare heavy s
   // v1 Fig. 4 same-material at n₂ = 0.001, 0.3. kinetic-converged-hcs's MSD is the closed form from its own settled
   // state; DSMC (and kinetic-converged-cooling3's VACF history) start at the Maxwellian HCS, T₂/T₁ = 82.3 against
   // 89.3, Maxwellian shapes, and at n₂ = 0.001 the heavy grain remembers it over [50, 5000]: the closed form alone
-  // was 1.05% above cooling3's history (4.9191 against 4.8677), DSMC (18 + 18 seeds, bo2-fig02's 20) with the history.
+  // is 1.05% above cooling3's history (4.9191 against 4.8677), DSMC (18 + 18 seeds, bo2-fig02's 20) with the history.
   // With the start's effect carried (increment_ratios), the two levels differ by what their settled states do
   // (+0.25%: cooling3's own closed form is 4.9068); at n₂ = 0.3 the memory is short and the effect vanishes.
-  const model::Scene s = model::load_scene_text(R"([scene]
+  const model::Scene s = theory::load_scene_text(R"([scene]
 name = "start-memory"
 [mixture]
 species = [{ mass = 1, diameter = 1, density = 0.1 }, { mass = 100, diameter = 4.641588833612779, density = 0.1 }]
@@ -144,7 +144,7 @@ paper = { particles = 1000, replicas = 2 }
   CHECK(std::abs(rare - 1.0) < 4e-3);  // 1.05% without the start's effect
   CHECK(column(hcs, "D_ratio_increment", 3) == Approx(column(hcs, "D_ratio", 3)).epsilon(1e-4));
   // The start factor's model error joins D_ratio_error: the same factor by kinetic-converged (first Sonine temperatures
-  // in time) against cooling3's, measured 0.16% at n₂ = 0.001 (2026-12-05) and 6e-6 at n₂ = 0.3, where the memory is short.
+  // in time) against cooling3's, measured 0.16% at n₂ = 0.001 and 6e-6 at n₂ = 0.3, where the memory is short.
   auto start_part = [&](double n2, std::size_t row) {
     const model::Scene p = model::sweep_point(s, n2);
     const CollisionRates rates = scene_rates(p, p.mixture, p.restitution);

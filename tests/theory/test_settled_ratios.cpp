@@ -4,10 +4,10 @@
 #include <cmath>
 #include <cstdio>
 
-#include "theory/diffusion.hpp"
-#include "theory/initial_state.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/initial_state.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;

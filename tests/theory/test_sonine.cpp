@@ -10,8 +10,8 @@
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine_hcs.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
 
 using namespace granmix;
 using namespace granmix::theory;
@@ -38,8 +38,8 @@ TEST_CASE("one species: c = 32(1-a)(1-2a^2)/(81 - 17a + 30a^2(1-a)) from alpha =
   const SonineHcs elastic = mg(3, 2, 1.5, 1.0);
   CHECK(elastic.gamma() == Approx(1.0).epsilon(1e-12));  // α = 1: equipartition and a Maxwellian
   CHECK(elastic.c[0] == Approx(0.0).margin(1e-13));
-  // Four species (v1 Fig. 7's mixture at ε = 1), orders 2 and 3: every ζ_k is 0, so the root finder's relative ζ
-  // differences were 0/0 (hybrids threw); equal temperatures are the exact answer, and with them the cumulant
+  // Four species (v1 Fig. 7's mixture at ε = 1), orders 2 and 3: every ζ_k is 0, so a root finder's relative ζ
+  // differences are 0/0 (GSL's hybrids throws); equal temperatures are the exact answer, and with them the cumulant
   // equations must give a Maxwellian.
   const model::Mixture four({{1, 1, 0.1}, {2, std::cbrt(2.0), 0.1}, {3, std::cbrt(3.0), 0.1}, {4, std::cbrt(4.0), 0.1}});
   for (int order : {2, 3}) {
@@ -63,8 +63,8 @@ TEST_CASE("Maxwellian level (c = 0) equals the settled ratio of v1 (A2) for 20 r
     const SonineHcs s = sonine_hcs(mix, model::Restitution::constant(2, alpha), chi, true);
     const double v1 = settled_ratios(CollisionRates(mix, model::Restitution::constant(2, alpha), chi))[1];
     INFO("mu " << mu << " delta " << delta << " w " << w << " alpha " << alpha << " n* " << nstar);
-    // MG Eq. (39) and v1 Eq. (A2) are the same function (physics.md §6); both roots converge to
-    // rounding, so 1e-10 is the bound the issue sets and it has room.
+    // MG Eq. (39) and v1 Eq. (A2) are the same function (docs/physics.md §6); both roots converge to
+    // rounding, so the bound 1e-10 has room.
     CHECK(s.T[1] / s.T[0] == Approx(v1).epsilon(1e-10));
   }
 }

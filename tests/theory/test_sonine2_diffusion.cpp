@@ -1,4 +1,4 @@
-// Second-Sonine tracer diffusion (physics-beyond.md §3): the closed-form collision integrals
+// Second-Sonine tracer diffusion (docs/physics-beyond.md §3): the closed-form collision integrals
 // against an independent quadrature and a plain Monte Carlo over both Maxwellians and σ̂; the
 // exact limits (elastic Lorentz gas 13/12, elastic self-diffusion 59/58); and D[2] against a Monte
 // Carlo of the tagged-particle Boltzmann–Lorentz problem itself (elastic and inelastic HCS, and
@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "model/enskog.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine2_diffusion.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
 #include "gauss_rules.hpp"
 #include "tagged_particle_mc.hpp"
 #include "theory_fixtures.hpp"
@@ -143,7 +143,7 @@ TEST_CASE("sonine2: closed-form C_pq agree with a plain Monte Carlo (z < 4)", "[
     }
 }
 
-TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (physics-beyond §1), nu_eff from the library rates", "[theory]") {
+TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (docs/physics-beyond.md §1), nu_eff from the library rates", "[theory]") {
   std::mt19937_64 rng(13);
   std::uniform_real_distribution<double> u(0, 1);
   for (int trial = 0; trial < 30; ++trial) {
@@ -157,7 +157,7 @@ TEST_CASE("sonine2: C_00 = (3/2) nu, the identity tau_v^-1 = nu - xi/2 (physics-
       double nu = 0;
       for (std::size_t i = 0; i < 2; ++i) {
         const double mk = mix[k].mass, mi = mix[i].mass, s = mix.sigma(k, i), mu = mi / (mi + mk);
-        // ν_ki = (4/3)√(2π) n_i σ_ki² χ_ki μ_ik (1+ε) v_ki (physics-beyond §1)
+        // ν_ki = (4/3)√(2π) n_i σ_ki² χ_ki μ_ik (1+ε) v_ki (docs/physics-beyond.md §1)
         const double nu_ki = 4.0 / 3 * std::sqrt(2 * pi) * mix[i].density * s * s * chi[k][i] * mu * (1 + e) * std::sqrt(T[k] / mk + T[i] / mi);
         CHECK(r.inv_tau_v(k, i, T[k], T[i]) == Approx(nu_ki - 0.5 * r.xi(k, i, T[k], T[i])).epsilon(1e-12));
         nu += nu_ki;

@@ -1,8 +1,8 @@
 // Tracer diffusion to Sonine order M ≤ 5 (sonine2_diffusion.hpp, the C_pq table of
-// scripts/derive_sonine_cpq.py; issue 12): the table against a quadrature written here from the definition,
+// scripts/derive_sonine_cpq.py): the table against a quadrature written here from the definition,
 // the viscoelastic quadrature against the table at constant ε, the mode matrices, the elastic Lorentz gas's
 // exact sequence, and the VACF ODE's settled MSD slope 6 D_k[M] with an oracle written here.
-// Mutants run against these (2026-12-02): a C_pq row's coefficient changed (C₂₂'s constant × 1.01) fails the
+// Planted bugs these catch: a C_pq row's coefficient changed (C₂₂'s constant × 1.01) fails the
 // first; the scaling matrix's (2p + 3) read as (2p + 1) fails the third, the fourth and the fifth.
 #include <catch2/catch.hpp>
 #include <Eigen/Dense>
@@ -14,12 +14,12 @@
 #include <random>
 #include <vector>
 
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/sonine_moment_cooling.hpp"
-#include "theory/sonine_quadrature.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/sonine/sonine_moment_cooling.hpp"
+#include "theory/sonine/sonine_quadrature.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/theory_level.hpp"
 #include "gauss_rules.hpp"
 #include "scalar_sonine.hpp"
 #include "theory_fixtures.hpp"
@@ -89,7 +89,7 @@ std::array<double, 25> quadrature_C(double mu, double eps, double Ak, double Ai,
   return sum;
 }
 
-// D_k[M] of the settled M-mode VACF ODE, written from physics-beyond §3 with the matrices typed in here:
+// D_k[M] of the settled M-mode VACF ODE, written from docs/physics-beyond.md §3 with the matrices typed in here:
 // N = 3/2, 15/4, 105/16, 315/32, 3465/256; M_pp = (2p+1)N_p, M_{p,p−1} = −(2p+3)N_{p−1}. Z_p decays at ζ/2
 // (the level's cooling rate) while the scaling terms use ξ (the Maxwellian rate of the C_pq sums, or ζ itself with
 // the a's): 0 = (2T/m) s_p − Σ_q [C_pq − (ξ/2)M_pq] b_q + ((ζ − ξ)/2) N_p b_p,  D = N₀ b₀/3, with the streaming
@@ -211,7 +211,7 @@ TEST_CASE("Sonine modes: elastic Lorentz gas D[M]/D[1] = 1, 13/12, 425/384, 3430
   CHECK(C5(4, 4) > 0.0);
 }
 
-TEST_CASE("Sonine modes: the settled MSD slope of the bo1-fig02 binary is 6 D_k[M] for M = 3, 4, with the species' a2, a3 (physics-beyond §3)", "[theory]") {
+TEST_CASE("Sonine modes: the settled MSD slope of the bo1-fig02 binary is 6 D_k[M] for M = 3, 4, with the species' a2, a3 (docs/physics-beyond.md §3)", "[theory]") {
   const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
   const model::Mixture& mix = r.mixture();
   const double t = 1e6;

@@ -1,5 +1,5 @@
 // The kinetic level's temperatures at Sonine order 3 (sonine_moment_cooling.hpp, the H(p; source) table of
-// scripts/derive_sonine_moments.py; issue 12): the table against a quadrature written here from the definition,
+// scripts/derive_sonine_moments.py): the table against a quadrature written here from the definition,
 // order 2 against MG's first Sonine (SonineCooling), the one-species fixed point of order 3 against the
 // second-Sonine HCS of Brilliantov & Pöschel (sonine_second_order.hpp: another derivation, other variables), and
 // the order-3 HCS of mixtures (sonine_hcs) against the long-time state of the order-3 temperature ODE.
@@ -17,14 +17,14 @@
 #include "model/mixture.hpp"
 #include "model/mixture_generators.hpp"
 #include "model/restitution.hpp"
-#include "theory/collision_rates.hpp"
-#include "theory/sonine_cooling.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/sonine_moment_cooling.hpp"
-#include "theory/sonine_moment_table.hpp"
-#include "theory/sonine_pair_terms.hpp"
-#include "theory/sonine_second_order.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/collision_rates.hpp"
+#include "theory/sonine/sonine_cooling.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/sonine/sonine_moment_cooling.hpp"
+#include "theory/sonine/sonine_moment_table.hpp"
+#include "theory/sonine/sonine_pair_terms.hpp"
+#include "theory/sonine/sonine_second_order.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "gauss_rules.hpp"
 #include "scalar_sonine.hpp"
 #include "theory_fixtures.hpp"
@@ -202,8 +202,8 @@ TEST_CASE("Sonine HCS at order 3: the long-time state of the order-3 temperature
 
 TEST_CASE("Sonine HCS at order 4: MG binaries against scripts/mg_gamma_sonine_orders.py, and the order-4 ODE settles there", "[theory]") {
   // The script solves the binary HCS at Sonine order K by its own assembly of the rates (sympy's H(p; q, r), the
-  // moments' Sonine weights from their definition) and Newton (python3 scripts with hcs_gamma(mu, delta, alpha, 4),
-  // 2026-12-05): gamma and c_1. Order 4 moves gamma by −0.74% at the first point and c_1 by +32%: a wrong a₄ term
+  // moments' Sonine weights from their definition) and Newton (python3 scripts with hcs_gamma(mu, delta, alpha, 4)):
+  // gamma and c_1. Order 4 moves gamma by −0.74% at the first point and c_1 by +32%: a wrong a₄ term
   // (its ⟨c⁸⟩ weights, a source in the wrong slot) moves both by far more than the bounds.
   struct Case {
     double mu, delta, alpha, gamma3, gamma4, c1_4;

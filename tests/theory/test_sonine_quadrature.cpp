@@ -1,5 +1,5 @@
 // First-Sonine collision integrals by quadrature over the normal impact speed (sonine_quadrature.hpp),
-// the kinetic level's route for viscoelastic restitution (issue 12): the constant-ε limit against MG's
+// the kinetic level's route for viscoelastic restitution: the constant-ε limit against MG's
 // closed forms and the closed C_pq, the Maxwellian level against v1 (A3)/(A4) by the existing moment
 // quadrature, the elastic limit, the cooling limit ε → 1 (c ∝ T^(1/10)), and an independent Monte Carlo
 // of the collision integrals over sampled Sonine-weighted pairs; the same two checks for the order-3 moment rates
@@ -15,13 +15,13 @@
 #include <vector>
 
 #include "model/viscoelastic.hpp"
-#include "theory/sonine_cooling.hpp"
-#include "theory/sonine_moment_cooling.hpp"
-#include "theory/sonine_pair_terms.hpp"
-#include "theory/sonine_quadrature.hpp"
-#include "theory/sonine_system.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/sonine/sonine_cooling.hpp"
+#include "theory/sonine/sonine_moment_cooling.hpp"
+#include "theory/sonine/sonine_pair_terms.hpp"
+#include "theory/sonine/sonine_quadrature.hpp"
+#include "theory/sonine/sonine_system.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -227,14 +227,14 @@ TEST_CASE("Sonine quadrature: the order-3 and order-4 moment rates at constant e
   const double three = constant_eps_gap(3, 13), four = constant_eps_gap(4, 17);
   std::printf("moment rates, constant-eps limit: largest relative difference %.2e (order 3), %.2e (order 4, all 28)\n", three, four);
   CHECK(three < 1e-8);  // the bound of the first-Sonine terms above: rounding and the u rule, not a wrong term
-  CHECK(four < 1e-7);   // the half-range rule is exact on these polynomials in u: 1.8e-10 measured (8.7e-9 with the rule in u^(1/10) before 2026-12-06); a wrong term is >= 1e-3
+  CHECK(four < 1e-7);   // the half-range rule is exact on these polynomials in u: 1.8e-10 measured (8.7e-9 with a rule in u^(1/10)); a wrong term is >= 1e-3
 }
 
 TEST_CASE("Sonine quadrature: a viscoelastic pair's moment rates with 32 impact speeds are those of 48 to 1e-9, 12 are not", "[theory]") {
   // ε(u) is a function of u^(1/10): the half-range rule converges algebraically there (sonine_quadrature.hpp), so its
   // size (impact_speed_points = 32) is set by this test. 60 random pairs (θ_k over e^(±6), θ_i/θ_k over e^(±4),
   // μ 0.01–0.99, A κ^(2/5) e^(−4)–1, the Padé ε), orders 3 and 4, in units of the pair's largest rate. Measured
-  // (2026-12-06, 200 pairs): 32 nodes 8.1e-11, 24 nodes 4.2e-10, 16 nodes 4.2e-9; 12 nodes ~1e-8.
+  // (200 pairs): 32 nodes 8.1e-11, 24 nodes 4.2e-10, 16 nodes 4.2e-9; 12 nodes ~1e-8.
   std::mt19937_64 gen(31);
   std::uniform_real_distribution<double> U(0.0, 1.0);
   double worst32 = 0.0, worst12 = 0.0;

@@ -1,5 +1,5 @@
-// Second Sonine approximation of the one-species HCS (theory/sonine_second_order.hpp) and the first-Sonine
-// truncation estimate built on it (theory/sonine_truncation.hpp): the nine collision-moment coefficients
+// Second Sonine approximation of the one-species HCS (theory/sonine/sonine_second_order.hpp) and the first-Sonine
+// truncation estimate built on it (theory/sonine/sonine_truncation.hpp): the nine collision-moment coefficients
 // against an independent exact Gauss quadrature of the collision integral and a Monte Carlo over sampled
 // velocity pairs and impact directions; the elastic limit; the first-Sonine limit against van Noije–Ernst
 // and the HCS solver theory/ uses; the truncation estimates against the distributions written out here.
@@ -13,8 +13,8 @@
 #include <random>
 
 #include "model/errors.hpp"
-#include "theory/sonine_second_order.hpp"
-#include "theory/sonine_truncation.hpp"
+#include "theory/sonine/sonine_second_order.hpp"
+#include "theory/sonine/sonine_truncation.hpp"
 
 using namespace granmix::theory;
 

@@ -1,8 +1,8 @@
-// The kinetic level's temperatures: first-Sonine cooling rates in time (physics-beyond.md §4) with
+// The kinetic level's temperatures: first-Sonine cooling rates in time (docs/physics-beyond.md §4) with
 // relaxing or quasi-static cumulants, against the settled first-Sonine HCS (sonine_hcs), the
-// one-species a₂ ODE of physics-beyond §4 (van Noije–Ernst fixed point, relaxation in collisions,
+// one-species a₂ ODE of docs/physics-beyond.md §4 (van Noije–Ernst fixed point, relaxation in collisions,
 // Haff's law with ζ(1 + 3a₂/16)), and the velocity-decay hook of the VACF MSD against the settled
-// closed form of physics-beyond §2.
+// closed form of docs/physics-beyond.md §2.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -12,10 +12,10 @@
 
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine_cooling.hpp"
-#include "theory/sonine_hcs.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine_cooling.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -58,7 +58,7 @@ SettledGap settled_gap(const SonineRun& run, const SonineHcs& hcs, double t) {
 
 TEST_CASE("Sonine cooling rates at c = 0 are v1 (A2) - units of MG's reduced rates converted", "[theory]") {
   // ζ_k = n (z0_k + Σ Z c) with v0 = σ_ref = 1 must be the Maxwellian ξ_k of CollisionRates at c = 0
-  // (MG Eq. 39 = v1 A2, physics.md §6) at any temperatures, with and without Enskog χ.
+  // (MG Eq. 39 = v1 A2, docs/physics.md §6) at any temperatures, with and without Enskog χ.
   std::mt19937_64 rng(5);
   std::uniform_real_distribution<double> u(0, 1);
   for (const double nstar : {0.0, 0.3}) {
@@ -92,7 +92,7 @@ TEST_CASE("MG Fig. 1 mixture: long-time ratios of the Sonine temperatures are so
                 run.history.stats().steps);
     // Both settle exponentially in ln t (x^(-2(β-1)) with β ~ 5 here): at t = 1e12 the transient is
     // gone and what is left is CVODE's error (rtol 1e-11 per step, ~1e-9 accumulated); 1e-6 is the
-    // brief's bound, 0.7% (3.826 against 3.8005) is the gap to the Maxwellian level it must resolve.
+    // bound, 0.7% (3.826 against 3.8005) is the gap to the Maxwellian level it must resolve.
     CHECK(g.ratio < 1e-6);
     CHECK(g.cumulant < 1e-6);
     CHECK(std::abs(gamma / maxwell - 1) > 5e-3);
@@ -119,7 +119,7 @@ TEST_CASE("three species: long-time Sonine temperature ratios and cumulants are 
 }
 
 TEST_CASE("one species: a2(t) = a2*(1 - exp(-kappa s)) in collisions s - van Noije-Ernst a2* - Haff with zeta(1 + 3a2/16)", "[theory]") {
-  // physics-beyond §4, one species, dτ = nσ²v_T dt (v_T = √(2T/m)), linear in a₂ as MG's equations:
+  // docs/physics-beyond.md §4, one species, dτ = nσ²v_T dt (v_T = √(2T/m)), linear in a₂ as MG's equations:
   //   da₂/dτ = (4/15)[5μ₂(1+a₂) − μ₄],  μ₂ = √(2π)(1−α²)(1 + 3a₂/16),  μ₄ = √(2π)[(1−α²)(9/2+α²) + a₂(271+64α−177α²−30α⁴)/32]
   // is da₂/dτ = −λ(a₂ − a₂*), λ = (4/15)√(2π)(81+64α+13α²−30α⁴)/32, a₂* = van Noije–Ernst. Per
   // collision (ω = 4√π nσ²√(T/m), so ds = 2√(2π) dτ) the rate is κ = (81+64α+13α²−30α⁴)/240: the
@@ -160,7 +160,7 @@ TEST_CASE("one species: a2(t) = a2*(1 - exp(-kappa s)) in collisions s - van Noi
 }
 
 namespace {
-// ν_k of physics-beyond §1, written out here: ν_ki = (4/3)√(2π) n_i σ_ki² μ_ik (1+ε) v_ki.
+// ν_k of docs/physics-beyond.md §1, written out here: ν_ki = (4/3)√(2π) n_i σ_ki² μ_ik (1+ε) v_ki.
 class TestMomentumRate final : public VelocityDecay {
  public:
   TestMomentumRate(const model::Mixture& mix, double eps) : mix_(mix), eps_(eps) {}
@@ -192,7 +192,7 @@ class FixedBeta final : public VelocityDecay {
 };
 }  // namespace
 
-TEST_CASE("velocity-decay hook: VACF MSD equals the settled closed form of physics-beyond §2 for the Maxwellian nu and for chosen beta", "[theory]") {
+TEST_CASE("velocity-decay hook: VACF MSD equals the settled closed form of docs/physics-beyond.md §2 for the Maxwellian nu and for chosen beta", "[theory]") {
   // Settled HCS, ζ common, τ₀ = 2/ζ(0), x = 1 + t/τ₀, β_k = 2ν_k(0)/ζ(0):
   //   M_k(t) = [6T_k(0)τ₀²/(m_k(β_k−1))] [ln x − (1 − x^(1−β_k))/(β_k−1)].
   for (const auto& species : {test::bo_binary(), test::bo_ternary()}) {
@@ -221,10 +221,10 @@ TEST_CASE("velocity-decay hook: VACF MSD equals the settled closed form of physi
           worst = std::max(worst, std::abs(h.msd_vacf(t, k) / closed - 1));
         }
       std::printf("%zu species, decay %s: VACF MSD against the closed form %.2e\n", N,
-                  chosen > 0 ? (chosen == 1.5 ? "beta = 1.5" : "beta = 3") : "nu of physics-beyond §1", worst);
+                  chosen > 0 ? (chosen == 1.5 ? "beta = 1.5" : "beta = 3") : "nu of docs/physics-beyond.md §1", worst);
       CHECK(worst <= 1e-6);
     }
-    // The hook's default is the same ν: §1's formula equals τ_v⁻¹ + ξ/2 (the identity of physics-beyond §1).
+    // The hook's default is the same ν: §1's formula equals τ_v⁻¹ + ξ/2 (the identity of docs/physics-beyond.md §1).
     std::vector<double> itau(N);
     r.inv_tau_v_all(T0.data(), itau.data());
     momentum.rates(T0.data(), xi.data(), nu.data());

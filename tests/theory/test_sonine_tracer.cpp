@@ -1,12 +1,12 @@
-// The kinetic level's tracer form (theory/sonine_tracer.hpp): the n₂ → 0 limit of the mixture's kinetic
+// The kinetic level's tracer form (theory/sonine/sonine_tracer.hpp): the n₂ → 0 limit of the mixture's kinetic
 // level, its elastic limit, and its reduction to the paper's tracer form without the Sonine corrections.
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 
-#include "theory/sonine_hcs.hpp"
-#include "theory/theory_level.hpp"
-#include "theory/sonine_tracer.hpp"
+#include "theory/sonine/sonine_hcs.hpp"
+#include "theory/levels/level_catalogue.hpp"
+#include "theory/sonine/sonine_tracer.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -87,7 +87,7 @@ TEST_CASE("sonine tracer: without a2 and with first-Sonine D it is the paper's t
     // n2/n1 = 0.1: both forms must drop the intruders' collisions themselves.
     const CollisionRates r = binary(c, 0.01);
     const TracerLimit paper = tracer_limit(r), bare = sonine_tracer_limit(r, {false, false});
-    // MG's first-Sonine rates at c = 0 are v1 (A2) (physics.md §6): the roots agree to rounding, the rates to 1e-13.
+    // MG's first-Sonine rates at c = 0 are v1 (A2) (docs/physics.md §6): the roots agree to rounding, the rates to 1e-13.
     CHECK(bare.theta == Approx(paper.theta).epsilon(1e-12));
     CHECK(bare.tau0 == Approx(paper.tau0).epsilon(1e-12));
     CHECK(bare.D_gas == Approx(paper.D_gas).epsilon(1e-12));

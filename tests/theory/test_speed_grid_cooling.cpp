@@ -1,4 +1,4 @@
-// The temperatures in time without the Sonine truncation (theory/speed_grid_cooling.hpp): exact at the Maxwellian start
+// The temperatures in time without the Sonine truncation (theory/grid/speed_grid_cooling.hpp): exact at the Maxwellian start
 // (the moments' rates of Maxwellians are the Sonine ones), settled at the converged HCS (a separate solver: stationary,
 // a secant in ζ per species), stable on finer knots (the drift's outflow term), and the size of its own truncation.
 #include <catch2/catch.hpp>
@@ -12,13 +12,13 @@
 #include <vector>
 
 #include "model/scene.hpp"
-#include "theory/converged_hcs.hpp"
-#include "theory/initial_state.hpp"
+#include "theory/grid/converged_hcs.hpp"
+#include "theory/histories/initial_state.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/sonine_moment_cooling.hpp"
-#include "theory/speed_grid_cooling.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/sonine/sonine_moment_cooling.hpp"
+#include "theory/grid/speed_grid_cooling.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/theory_level.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -53,7 +53,7 @@ TEST_CASE("speed-grid temperatures: at the Maxwellian start the rates of T and a
   std::vector<double> zp = z, zm = z;
   for (std::size_t j = 0; j < z.size(); ++j) zp[j] += h * dz[j], zm[j] -= h * dz[j];
   // The grid's error is the collision rule's over the partner's velocities (12 points; 16 move T by ≤ 4e-5 along the
-  // histories): measured 5e-7, 7e-5, 3e-5 of ξ_k and 4e-5, 2e-5 ξ_k in da₂/dt (2026-12-05).
+  // histories): measured 5e-7, 7e-5, 3e-5 of ξ_k and 4e-5, 2e-5 ξ_k in da₂/dt.
   double moved = 0.0;
   for (std::size_t k = 0; k < N; ++k) {
     INFO("species " << k + 1);
@@ -103,7 +103,7 @@ TEST_CASE("speed-grid temperatures: the right-hand side is the same whether a sp
 TEST_CASE("speed-grid temperatures: a mixture settles at the converged HCS (v1 Figs. 2, 6)", "[theory]") {
   // The history from equal Maxwellian temperatures to t = 1e8 (ten thousand Haff times) against converged_hcs: the same
   // truncation (partners through a₂, a₃) on the same splines, but stationary (a secant in ζ per species, quasi-Newton
-  // passes). Measured 2026-12-05: T ratios 2.5e-5 (binary), 1.4e-4 and 9.5e-5 (ternary) apart — the HCS's own grid
+  // passes). Measured: T ratios 2.5e-5 (binary), 1.4e-4 and 9.5e-5 (ternary) apart — the HCS's own grid
   // estimate is 5.5e-5 / 6.5e-5 (its domain is 7 thermal widths, the history's 9) — a₂ within 2e-5, a₃ within 2e-4. The
   // order-3 Sonine HCS is 0.5% / 1.5% away in T, and its a₂ differs by 0.01–0.03.
   for (const auto& species : {test::bo_binary(), test::bo_ternary()}) {
@@ -127,10 +127,10 @@ TEST_CASE("speed-grid temperatures: a mixture settles at the converged HCS (v1 F
 }
 
 TEST_CASE("speed-grid temperatures: the drift's outflow term keeps every mode decaying on fine knots", "[theory]") {
-  // The Galerkin drift without its boundary term at U has growing modes at the edge, rate ∝ 1/h: the history stalled on
+  // The Galerkin drift without its boundary term at U has growing modes at the edge, rate ∝ 1/h: the history stalls on
   // 12 knots per width (CVODE's step to 1e-16 at t ~ 800). With the outflow term (SpeedGrid::edge) the Jacobian of dz/dt
   // at fixed T has no eigenvalue above rounding; without it, at 16 knots per width, +72 (light species, partner at equal
-  // temperature; 2026-12-05). Here at 16 knots, partners at unequal temperatures.
+  // temperature). Here at 16 knots, partners at unequal temperatures.
   const CollisionRates rates = test::constant_rates(test::bo_binary(), 0.5);
   SpeedGridSettings fine;
   fine.knots = 16.0;
@@ -159,12 +159,12 @@ TEST_CASE("speed-grid temperatures: the scenes that judge them - their collision
   // The scenes at the level kinetic-converged-grid compute its model error per point from the companions a2 (every shape
   // through a₂ alone: the a₃ term's size) and basis; what neither measures is the collision rule over the partners'
   // velocities, their `relative`: 12 against 16 points, the largest change of any T over the scene's times, rounded up
-  // to 0.01% (measured 2026-12-05: bo1-fig01 0.005%, bo1-fig02 0.008%, bo1-fig03 0.049%, bo1-fig03-aged 0.004%,
+  // to 0.01% (measured: bo1-fig01 0.005%, bo1-fig02 0.008%, bo1-fig03 0.049%, bo1-fig03-aged 0.004%,
   // bo1-fig06 0.004%, bo2-fig02 0.002%; the knots, 5 against 8 per width, ≤ 2.2e-7; the domain, 9 against 11 widths,
   // ≤ 6e-6). The a₃ term of the temperatures alone (0.16 / 0.17 / 0.41 / 0.41 / 0.20 / 0.41%) is asserted in a band: a
-  // partner's a₃ that no longer entered would make it 0, and with it the a2 companion's share of the model error.
+  // partner's a₃ left out would make it 0, and with it the a2 companion's share of the model error.
   for (const char* name : {"bo1-fig01", "bo1-fig02", "bo1-fig03", "bo1-fig03-aged", "bo1-fig06", "bo2-fig02"}) {
-    const model::Scene s = model::load_scene(std::string(GRANMIX_SOURCE_DIR) + "/compare/scenes/" + name + ".toml");
+    const model::Scene s = theory::load_scene(std::string(GRANMIX_SOURCE_DIR) + "/compare/scenes/" + name + ".toml");
     REQUIRE(s.theory.level == "kinetic-converged-grid");
     const CollisionRates rates = scene_rates(s, s.mixture, s.restitution);
     // The start as the level makes it: Maxwellian at the scene's temperatures, or aged by the same grid (each variant its own).

@@ -1,4 +1,4 @@
-// SphereGain (theory/sphere_gain.hpp): the gain of a collision into the speed grid's cubic B-splines, Σ_p W_p ∫ N_m(s) sᵖ
+// SphereGain (theory/grid/sphere_gain.hpp): the gain of a collision into the speed grid's cubic B-splines, Σ_p W_p ∫ N_m(s) sᵖ
 // ds over a range of post-collision speeds, accumulated as per-interval power sums. Checked against the integrals done
 // directly (Gauss–Legendre on every knot interval the range covers, exact for the polynomials there).
 #include <catch2/catch.hpp>
@@ -9,13 +9,13 @@
 #include <vector>
 
 #include "gauss_rules.hpp"
-#include "theory/sphere_gain.hpp"
+#include "theory/grid/sphere_gain.hpp"
 
 using namespace granmix::theory;
 
 namespace {
 
-// The cardinal cubic B-spline on [0, 4] (tracer_speed_grid.cpp's N_m(s) = spline(s/h − m + 3)), written out again.
+// The cardinal cubic B-spline on [0, 4] (speed_grid.cpp's N_m(s) = spline(s/h − m + 3)), written out again.
 double spline(double x) {
   if (x <= 0.0 || x >= 4.0) return 0.0;
   if (x < 1.0) return x * x * x / 6.0;

@@ -6,8 +6,8 @@
 #include <cstdio>
 #include <memory>
 
-#include "theory/diffusion.hpp"
-#include "theory/temperature_history.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/temperature_history.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -68,13 +68,13 @@ TEST_CASE("viscoelastic mixture drifts towards equipartition", "[theory]") {
   const double early = h.temperature(1e3, 1) / h.temperature(1e3, 0);
   const double late = h.temperature(1e12, 1) / h.temperature(1e12, 0);
   std::printf("viscoelastic binary: T2/T1 = %.4f at t=1e3, %.4f at t=1e12\n", early, late);
-  CHECK(late < early);  // physics.md §2: ratios drift towards 1 as the gas cools
+  CHECK(late < early);  // docs/physics.md §2: ratios drift towards 1 as the gas cools
   CHECK(late > 1.0);
 }
 
 TEST_CASE("accuracy does not depend on which companions are integrated", "[theory]") {
-  // Regression: a 1e-60 absolute tolerance on the companions once made CVODE start at h = 1e-37
-  // and left ln T 1e-4 off at rtol 1e-10. The global error is about 10 rtol (bench/): bound 100 rtol.
+  // A 1e-60 absolute tolerance on the companions would make CVODE start at h = 1e-37
+  // and leave ln T 1e-4 off at rtol 1e-10. The global error is about 10 rtol (bench/): bound 100 rtol.
   const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
   TemperatureOptions ref_opt;
   ref_opt.rtol = 1e-13;

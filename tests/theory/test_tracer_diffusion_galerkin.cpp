@@ -1,4 +1,4 @@
-// The tracer problem solved without the Sonine truncation (theory/tracer_diffusion_galerkin.hpp): the machinery
+// The tracer problem solved without the Sonine truncation (theory/grid/tracer_diffusion_galerkin.hpp): the machinery
 // against the closed-form Sonine D[M]; the exact Lorentz-gas limit 32/(9π), which the Sonine sequence approaches
 // only slowly; the convergence under the test weight λ = 2 where λ = 1 diverges; the velocity memory (exact
 // ballistic start, its integral D); and the kinetic-converged level at settled ratios.
@@ -11,12 +11,12 @@
 #include <numbers>
 #include <vector>
 
-#include "theory/diffusion.hpp"
-#include "theory/tamsd.hpp"
-#include "theory/settled_ratios.hpp"
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/theory_level.hpp"
-#include "theory/tracer_diffusion_galerkin.hpp"
+#include "theory/rates/diffusion.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/rates/settled_ratios.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/levels/level_catalogue.hpp"
+#include "theory/grid/tracer_diffusion_galerkin.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -216,7 +216,7 @@ TEST_CASE("tracer Galerkin: the coarser pair rules of a smooth weighted basis (x
 
 TEST_CASE("tracer Galerkin: the impact speed's 16-node rule at constant eps is within the pair rule's budget of 32 nodes", "[theory]") {
   // Given W and |v_⊥|² the pair integrand is smooth in the impact speed u, so its half-range Gauss rule converges
-  // fast: RadialBasis::speed_points = 16 (24 before 2026-12-06; v1 Fig. 8's pair tables 1.5x faster). Checked as the
+  // fast: RadialBasis::speed_points = 16 (v1 Fig. 8's pair tables 1.5x faster than with 24). Checked as the
   // coarse-rule test above: both species of 1:5, 1:12, 1:100 and 1:200 binaries (ε = 0.5, each with its own tier),
   // each partner and partner-shape source alone, the partner as hot as at the start and e^(±4) times hotter, against
   // 32 nodes, in units of the node's largest entry. Measured: ≤ 5.1e-10 where the partner is not hotter than at the
@@ -255,8 +255,8 @@ TEST_CASE("tracer Galerkin: a viscoelastic pair's 24-node impact-speed rule is c
   // Checked on v1 Fig. 10's ternary (A κ^(2/5) = 0.09, the exact ε), every ordered pair and partner-shape source alone,
   // the tracer at θ_k = 1e2, 1, 1e-4 and 1e-8 (its history cools through them; ε → 1 as θ → 0), the partner as hot as
   // at an equal start and e^(±4) times that, against 48 nodes, in units of the node's largest entry. Measured
-  // (2026-12-06): 24 nodes 2.9e-8 (the W × |v_⊥|² tiers' budget is 5e-5), 12 nodes 8.6e-4; the 80-node Gauss–Legendre
-  // rule in (u/√(2V))^(1/10) used until then 2.4e-7 against the same reference.
+  // 24 nodes 2.9e-8 (the W × |v_⊥|² tiers' budget is 5e-5), 12 nodes 8.6e-4; an 80-node Gauss–Legendre
+  // rule in (u/√(2V))^(1/10) 2.4e-7 against the same reference.
   const CollisionRates r = test::viscoelastic_rates(test::bo_ternary(), 0.09);
   const std::vector<double> T0 = {1.0, 1.0, 1.0};
   double worst24 = 0.0, worst12 = 0.0;

@@ -1,5 +1,5 @@
-// The intruder in time without the Sonine truncation (theory/tracer_relaxation.hpp) and the displacements along its steps
-// (theory/scaled_time_motion.hpp): the l = 1 harmonic of the speed grid against the exact elastic limits (Lorentz gas
+// The intruder in time without the Sonine truncation (theory/grid/tracer_relaxation.hpp) and the displacements along its steps
+// (theory/numerics/scaled_time_motion.hpp): the l = 1 harmonic of the speed grid against the exact elastic limits (Lorentz gas
 // 32/(9π), self-diffusion 1.019), the Q-form against the closed forms where nothing changes in time, the relaxation's
 // long-time limit against the stationary solver, and its step and grid convergence.
 #include <catch2/catch.hpp>
@@ -12,15 +12,15 @@
 #include <numbers>
 #include <vector>
 
-#include "theory/msd.hpp"
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/scaled_time_motion.hpp"
-#include "theory/tamsd.hpp"
-#include "theory/theory_level.hpp"
-#include "theory/tracer_relaxation.hpp"
-#include "theory/tracer_speed_grid.hpp"
-#include "theory/tracer_temperature.hpp"
-#include "theory/velocity_memory.hpp"
+#include "theory/histories/msd.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/numerics/scaled_time_motion.hpp"
+#include "theory/histories/tamsd.hpp"
+#include "theory/levels/level_catalogue.hpp"
+#include "theory/grid/tracer_relaxation.hpp"
+#include "theory/grid/speed_grid.hpp"
+#include "theory/grid/tracer_temperature.hpp"
+#include "theory/rates/velocity_memory.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -29,7 +29,7 @@ using namespace granmix::theory;
 namespace {
 
 // D/D[1] of the tracer (species 1) in an elastic Maxwellian gas from the l = 1 harmonic's stationary response:
-// D = (1/3)∫₀^∞ ⟨u(0)·u(s)⟩ ds = (1/3) u1·(−A₁⁻¹) gram_u P (tracer_speed_grid.hpp), P the Maxwellian at T₁.
+// D = (1/3)∫₀^∞ ⟨u(0)·u(s)⟩ ds = (1/3) u1·(−A₁⁻¹) gram_u P (speed_grid.hpp), P the Maxwellian at T₁.
 double elastic_factor(const CollisionRates& r) {
   const double m2 = r.mixture()[1].mass, width = std::sqrt(1.0 / m2);
   const SpeedGridProblem p = speed_grid_problem(r, {1.0, 0.0, 0.0});
@@ -111,7 +111,7 @@ TEST_CASE("speed grid: every sigma integral is exact (a cold partner: <s>, <s^3>
   //   density:  Σ_m α_m collisions_mj = r (k_n − 1) ∫N_j u^(n+1) du  (n = 1, 3); the columns sum to zero (|v′| ≤ u);
   //   l = 1:    Σ_m α_m collisions_p1_mj = r ∫N_j u (⟨v′_z |v′|^(n−1)⟩ − uⁿ) du, ⟨v′_z⟩ = c, ⟨v′_z|v′|²⟩ = c(c² + R²) + 2cR²/3;
   //   the gas (w′ = κ(ẑ − n), κ = (m_own/m_partner)R): G = r m_p κ² u, H = −r u² R, G₄ = r (16/3) κ⁴ u.
-  // |v′| is no polynomial in cos θ, so a rule over σ̂ misses the first ones (the 12-point rule of before 2026-12-05:
+  // |v′| is no polynomial in cos θ, so a rule over σ̂ misses the first ones (a 12-point rule:
   // 1.3e-6 and 8.5e-8 relative); a wrong piece of the spline integrals by O(1) of its entries.
   const double eps = 0.6, m_partner = 1.0, m_own = 3.0, beta = m_partner * (1.0 + eps) / (m_partner + m_own);
   const CollisionRates r = test::constant_rates({{m_partner, 1.0, 0.1}, {m_own, 1.3, 0.05}}, eps);
@@ -198,8 +198,8 @@ TEST_CASE("intruder relaxation: in the tracer limit it settles on the stationary
 
 TEST_CASE("intruder relaxation: v2 Fig. 5 from the converged start, converged in its steps and grid, its mutual collisions", "[theory]") {
   // From a Maxwellian at the converged stationary θ (579.74, with the heating) the intruder's shape forms first (θ dips to
-  // ~510 at t ~ 15, DSMC 517 ± 5) and θ settles over thousands (DSMC 573 ± 4 at t = 8e3; README, "v2 Fig. 5's
-  // intruder"). Recorded here: the same with steps 4× shorter moves θ by < 1e-5 (measured 2026-12-04: 4e-6), 12
+  // ~510 at t ~ 15, DSMC 517 ± 5) and θ settles over thousands (DSMC 573 ± 4 at t = 8e3;
+  // docs/levels.md, "v2 Fig. 5's intruder"). Recorded here: the same with steps 4× shorter moves θ by < 1e-5 (measured 4e-6), 12
   // knots per width or 6 collision points by < 2e-6. The mutual collisions (ν₂₂ = 1.8e-3 against κ = ν − ζ/2 ≈ 7e-4)
   // lower θ by ~1% at t = 8e3 and raise the velocity's decay; the l = 1 MSD then falls by ~5% (below).
   const CollisionRates r = fig05_pair();

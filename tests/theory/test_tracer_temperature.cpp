@@ -1,4 +1,4 @@
-// The intruder's stationary distribution in the tracer limit without the Sonine truncation (theory/tracer_temperature.hpp,
+// The intruder's stationary distribution in the tracer limit without the Sonine truncation (theory/grid/tracer_temperature.hpp,
 // a speed grid): exact limits (elastic equipartition), the first Sonine where the distribution is near a Maxwellian, and
 // the converged temperature against a Monte Carlo of the tagged-particle problem itself (tagged_particle_mc.hpp,
 // written independently of theory/), for an ordinary intruder and for v2 Fig. 5's at the Santos–Dufty edge.
@@ -11,10 +11,10 @@
 #include <cstdio>
 #include <vector>
 
-#include "theory/sonine_tracer.hpp"
-#include "theory/tracer_limit.hpp"
-#include "theory/tracer_speed_grid.hpp"
-#include "theory/tracer_temperature.hpp"
+#include "theory/sonine/sonine_tracer.hpp"
+#include "theory/rates/tracer_limit.hpp"
+#include "theory/grid/speed_grid.hpp"
+#include "theory/grid/tracer_temperature.hpp"
 #include "tagged_particle_mc.hpp"
 #include "theory_fixtures.hpp"
 
@@ -150,9 +150,9 @@ GridSolve solve_grid(const SpeedGridProblem& p, double zeta, double width, const
 }  // namespace
 
 TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary density's moments, 2 do not, and its far tail needs 4", "[theory]") {
-  // CollisionRule::speeds (tracer_speed_grid.hpp): the converged HCS's moment solves take 3 Gauss points in u per knot
+  // CollisionRule::speeds (speed_grid.hpp): the converged HCS's moment solves take 3 Gauss points in u per knot
   // interval, every pointwise density 4. Against 8, an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian
-  // gas at the paper's ζ (K = 56 knots over 7 widths, as the solves): measured 2026-12-06, 3 speeds θ ≤ 6.8e-9, a₂ ≤
+  // gas at the paper's ζ (K = 56 knots over 7 widths, as the solves): measured, 3 speeds θ ≤ 6.8e-9, a₂ ≤
   // 5.7e-7 (2: up to 2.2e-6 and 2.5e-3); the density at 6 thermal widths with 4 speeds ≤ 1.8e-6, with 3 up to 4.8e-3.
   double theta3 = 0.0, a2_3 = 0.0, a2_2 = 0.0, tail4 = 0.0, tail3 = 0.0;
   for_each_grid_intruder([&](const SpeedGridProblem& p, double zeta, double width) {
@@ -177,11 +177,11 @@ TEST_CASE("speed grid: 3 collision speeds per knot interval give a stationary de
 // [slow]: not under the sanitizers (5.5 s here, most of it the finer reference rule; the panel rule's code runs there in
 // the converged distributions' tests and "granmix theory mg-fig07").
 TEST_CASE("speed grid: w_z by panels cut at the kinks converges where the Hermite rule straddles them, near u = 0", "[theory][slow]") {
-  // CollisionRule's panels (tracer_speed_grid.hpp: the settled distributions' rule, 10 points per panel one width wide,
+  // CollisionRule's panels (speed_grid.hpp: the settled distributions' rule, 10 points per panel one width wide,
   // 128 in |w_⊥|²) and the 64-point Gauss–Hermite product rule, each against finer panels (12 points per half width,
   // 256): an intruder of mass 1, 2, 10 at ε = 0.2, 0.5, 0.9 in a Maxwellian gas, its stationary θ and the gas's energy
-  // gain (SpeedGridParts::all: both kinds of interval assembled), and its speed density at 0.1 thermal widths. Measured
-  // 2026-12-07: panels θ ≤ 2.7e-8, gain ≤ 2.7e-8, density near 0 ≤ 8.4e-5; Hermite 2.5e-7, 2.4e-7 and up to 1.1e-2 (the
+  // gain (SpeedGridParts::all: both kinds of interval assembled), and its speed density at 0.1 thermal widths. Measured:
+  // panels θ ≤ 2.7e-8, gain ≤ 2.7e-8, density near 0 ≤ 8.4e-5; Hermite 2.5e-7, 2.4e-7 and up to 1.1e-2 (the
   // equal-mass intruder at ε = 0.9). A wrong panel weight or a missing panel moves θ by far more.
   double theta = 0.0, gain = 0.0, low = 0.0, hermite_low = 0.0;
   const CollisionRule panels(10, 1.0, 128), hermite(64), reference(12, 0.5, 256);

@@ -1,7 +1,7 @@
-// The velocity correlation with two Sonine modes (SonineDecay at M = 2, level kinetic-sonine2; issue 12): its settled
-// MSD slope is 6 D_k[2] of physics-beyond §3, its short-time decay is the first-Sonine ν_k (not the
-// long-time ν_eff of the former one-mode closure), and an elastic gas settles at Chapman–Cowling's 59/58 D[1].
-// Mutants run against these (2026-12-02): Q decaying at ν_eff with P dropped (the former closure) fails the
+// The velocity correlation with two Sonine modes (SonineDecay at M = 2, level kinetic-sonine2): its settled
+// MSD slope is 6 D_k[2] of docs/physics-beyond.md §3, its short-time decay is the first-Sonine ν_k (not the
+// long-time ν_eff of a one-mode closure), and an elastic gas settles at Chapman–Cowling's 59/58 D[1].
+// Planted bugs these catch: Q decaying at ν_eff with P dropped (the one-mode closure) fails the
 // first two; C₁₀'s sign flipped in dP/dt fails the first and the third; the 5ζ/2 term dropped fails the first; the level's Sonine ζ_k in place of ξ_k in dP/dt fails
 // the first (slope −2.0e-3, −1.5e-3 off).
 #include <catch2/catch.hpp>
@@ -10,9 +10,9 @@
 #include <memory>
 #include <vector>
 
-#include "theory/sonine2_diffusion.hpp"
-#include "theory/temperature_history.hpp"
-#include "theory/theory_level.hpp"
+#include "theory/sonine/sonine2_diffusion.hpp"
+#include "theory/histories/temperature_history.hpp"
+#include "theory/levels/level_catalogue.hpp"
 #include "theory_fixtures.hpp"
 
 using namespace granmix;
@@ -37,7 +37,7 @@ double slope(const TemperatureHistory& h, std::size_t k, double t, double w) {
 
 }  // namespace
 
-TEST_CASE("two-mode VACF: the settled MSD slope of the bo1-fig02 binary is 6 D_k[2] (physics-beyond §3)", "[theory]") {
+TEST_CASE("two-mode VACF: the settled MSD slope of the bo1-fig02 binary is 6 D_k[2] (docs/physics-beyond.md §3)", "[theory]") {
   const CollisionRates r = test::constant_rates(test::bo_binary(), 0.5);
   const double t = 1e6;
   const TemperatureHistory h = kinetic_history(r, {1.0, 1.0}, 2 * t);

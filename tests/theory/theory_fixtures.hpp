@@ -7,7 +7,7 @@
 
 #include "model/enskog.hpp"
 #include "model/mixture_generators.hpp"
-#include "theory/collision_rates.hpp"
+#include "theory/rates/collision_rates.hpp"
 
 namespace granmix::test {
 

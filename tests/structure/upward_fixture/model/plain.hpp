@@ -1,0 +1,3 @@
+#pragma once
+// A planted upward include from model/ into theory/: also rejected.
+#include "theory/grid/high.hpp"
