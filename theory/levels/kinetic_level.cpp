@@ -35,11 +35,11 @@ std::string sonine_suffix(std::size_t order) { return order == kinetic_sonine_or
 }  // namespace
 
 void declare_kinetic_levels(LevelCatalogue& c) {
-  std::vector<KineticVariant> variants;
+  // The levels a scene may choose first, then the companions and study levels (D at another Sonine order).
+  std::vector<KineticVariant> variants = {{}, {kinetic_sonine_order, 3, false}, {kinetic_sonine_order, 3, true}, {kinetic_sonine_order, 4, false}};
   for (int cooling : {2, 3})
-    for (std::size_t n = 1; n <= max_sonine_modes; ++n) variants.push_back({n, cooling, false});
-  variants.push_back({kinetic_sonine_order, 3, true});
-  variants.push_back({kinetic_sonine_order, 4, false});
+    for (std::size_t n = 1; n <= max_sonine_modes; ++n)
+      if (n != kinetic_sonine_order) variants.push_back({n, cooling, false});
   const std::vector<KineticCompanion> companions = {
       {"sonine1", "D at first Sonine (its second-Sonine correction's size)",
        [](KineticVariant v) -> std::optional<KineticVariant> { return v.order == kinetic_sonine_order && !v.shaped ? std::optional(KineticVariant{1, v.cooling_order, false}) : std::nullopt; }, {}},
