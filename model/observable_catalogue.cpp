@@ -8,7 +8,7 @@ namespace granmix::model {
 
 const std::vector<ObservableDescriptor>& observable_catalogue() {
   // Columns are written by theory/scene_theory.cpp (level_table, sweep_table, distribution tables) and
-  // dsmc/scene_dsmc.cpp (dsmc_columns), each from the estimators named here; errors are over replicas
+  // dsmc/scene_dsmc.cpp (make_table), each from the estimators named here; errors are over replicas
   // (dsmc/ensemble.cpp: the replicas' spread, the jackknife for ratios; docs/dsmc.md §8).
   static const std::vector<ObservableDescriptor> catalogue = {
       {"temperatures", {"T"}, "t", "partial temperatures T_k(t) (species 0: the mean <T>)",
