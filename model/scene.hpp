@@ -91,7 +91,7 @@ struct CompareQuantity {
   // The resolution the judged level claims for this quantity (relative): a judged point whose model error (relative
   // + the computed parts) exceeds it fails as unresolved, whatever DSMC says. A bound computed from companions widens
   // with a bug that moves the companions as much as the level (oscillating densities, docs/reliability.md, "kill table"); this is the
-  // check that the computed bound is itself what the level was built to resolve (issue 12's targets). Infinite: none.
+  // check that the computed bound is itself what the level was built to resolve (3% for MSDs, T and D ratios; docs/judging.md §4). Infinite: none.
   double model_error_max = INFINITY;
   double relative = 0.05, z = 4.0;
   double absolute = 0.0;        // for quantities that cross zero (c): |dsmc − theory| <= absolute also passes

@@ -25,7 +25,7 @@ namespace {
 
 // The converged levels' basis companion (kinetic-converged-grid's, kinetic-converged-cooling3's): the tracer problem with
 // this many functions (the level's 8). v1 Fig. 2's MSDs move by ≤ 4.2e-4 from 8 to 10 functions (1.0e-4 from 8 to 7;
-// measured 2026-12-05).
+// measured).
 constexpr std::size_t companion_basis = 10;
 
 // A velocity decay given the species' a₂ alone (its a₃ withheld: in the tracer's source and in its partners), for
@@ -59,7 +59,7 @@ class WithoutThirdSonine final : public VelocityDecay {
 // Why: at the kinetic level's own settled state the Sonine sequence D[M] of the tracer problem does not converge at
 // strong dissipation (bo1-fig05, ε = 0.2, light species: 0.820, 0.923, 0.825, 0.945 for M = 2…5) and leaves the
 // species' shape out; solved converged with it, the settled D ratios of v1 Figs. 4, 5, 7 move to within 3% of DSMC
-// (README, "The converged tracer problem").
+// (docs/levels.md, "The converged tracer problem").
 class ConvergedLevel final : public TheoryLevel {
  public:
   static constexpr std::size_t converged_species_limit = 100;
@@ -71,13 +71,13 @@ class ConvergedLevel final : public TheoryLevel {
     // "kinetic-converged-hcs", the tracer problem at the converged HCS (converged_hcs.hpp: its T_k, a₂,k, a₃,k and ζ)
     // instead of the Sonine one; sweeps only (model/scene.cpp). Why: under v1 Fig. 5's D ratios the Sonine HCS is the
     // gap — at the converged HCS they move by −1.3 … −2.8%, to within 0.5% of DSMC at paper fidelity
-    // (docs/paper-fidelity.md; test "kinetic-converged-hcs: …").
+    // (docs/validation.md; test "kinetic-converged-hcs: …").
     bool hcs_converged = false;
     // "kinetic-converged-grid": the temperatures and the species' shapes in time without the Sonine truncation (the
     // speed grid, speed_grid_cooling.hpp; constant ε, up to grid_species_limit species), the HCS the
     // converged one. Why: in time the Sonine series is asymptotic where a light species runs far from its partners'
     // temperature (v1 Fig. 2's light species at t = 10: orders 2 / 3 / 4 −3.8 / 0 / −3.4% from order 3); on the grid
-    // v1 Fig. 2's light T and v1 Fig. 6's light MSD lie within 0.1–0.2% of paper-fidelity DSMC at every time (README).
+    // v1 Fig. 2's light T and v1 Fig. 6's light MSD lie within 0.1–0.2% of paper-fidelity DSMC at every time (docs/validation.md).
     bool grid = false;
     // Its companions, the computed parts of its model error: every shape seen through a₂ alone (the partners in the
     // temperatures and in the tracer problem, the species' own in the tracer's source: the a₃ term's size), and the
@@ -97,8 +97,8 @@ class ConvergedLevel final : public TheoryLevel {
     refuse_beyond_species_limit(rates);
     // The basis (x₀) from the Maxwellian settled temperatures, the same for both converged levels, so that the judged
     // level and its `converged` companion share their pair tables (opt.galerkin_tables). The basis is a numerical
-    // choice: each level's own settled temperatures (before 2026-12-03) give MSDs within 9.4e-5 (bo1-fig03-aged), v1
-    // Fig. 8's near-critical k = 40–43 within 1.7e-3 (its basis sensitivity: ~1% across 6–9 functions, README).
+    // choice: each level's own settled temperatures would give MSDs within 9.4e-5 (bo1-fig03-aged), v1
+    // Fig. 8's near-critical k = 40–43 within 1.7e-3 (its basis sensitivity: ~1% across 6–9 functions, docs/levels.md).
     std::shared_ptr<const VelocityDecay> decay =
         std::make_shared<GalerkinDecay>(rates, theory::settled_temperatures(rates).T, v_.basis, opt.galerkin_tables);
     opt.decay = v_.a2_only ? std::make_shared<WithoutThirdSonine>(std::move(decay)) : decay;
@@ -198,7 +198,7 @@ class ConvergedLevel final : public TheoryLevel {
   // form was 1.0% above DSMC's 18 + 18 seeds and bo2-fig02's 20). kinetic-converged-cooling3's VACF history from both
   // starts carries the difference (its settled ratio 89.02). Its model error: the same factor by kinetic-converged (first
   // Sonine temperatures in time) against it — 0.16% there, 0.20% at v1 Fig. 4's n₂ = 0.01, 0.18% at v1 Fig. 5
-  // equal-sizes' ε = 0.2, ≤ 0.012% at the other DSMC points of the five sweeps (measured 2026-12-05).
+  // equal-sizes' ε = 0.2, ≤ 0.012% at the other DSMC points of the five sweeps.
   StartCompanions start_companion() const override {
     if (!v_.hcs_converged) return {};
     return {"kinetic-converged-cooling3", "kinetic-converged"};
@@ -238,10 +238,10 @@ class ConvergedLevel final : public TheoryLevel {
   // moves with a coarser grid (`change`: knots 1.5× wider or the coarse collision rule; the grid used is finer) by 0.04%
   // at m₂/m₁ = 100, ε = 0.7, 0.2% at ε = 0.5 (v2 Fig. 5), 1.0/1.9% at ε = 0.9/0.8 (θ near equipartition), 5.5% at m₂/m₁ =
   // 300 (ε = 0.5); from ~500 it does not settle at all, and at 3000 it once settled by chance with a change of 60%
-  // (measured 2026-12-04). Beyond 10% the level refuses, naming the limit, rather than judge DSMC against a number the
+  // Beyond 10% the level refuses, naming the limit, rather than judge DSMC against a number the
   // grid does not resolve. Where it settles the change bounds the grid's error: against a finer grid (knots 2× and 3×
   // denser, the collision rule's 12 gas points → 24 and 48) θ moves by 1.5e-5 at ε = 0.5 (v2 Fig. 5), 2.5e-5 at 0.7,
-  // 0.08% at 0.8 and 0.21% at 0.9 (m₂/m₁ = 100; the rule's part, the knots' < 3e-8 there; measured 2026-12-04).
+  // 0.08% at 0.8 and 0.21% at 0.9 (m₂/m₁ = 100; the rule's part, the knots' < 3e-8 there).
   static constexpr double max_grid_change = 0.1;
   static TracerTemperature converged_intruder(const CollisionRates& rates) {
     const model::Restitution& law = rates.law();

@@ -20,8 +20,8 @@ namespace {
 // without the Sonine truncation of the species' own distributions (converged_hcs.hpp); everything in time is the kinetic
 // level's. Why: the HCS Sonine series is asymptotic — over MG Figs. 4–5's 18 DSMC points (mean of three paper seeds)
 // orders 2/3/4 swing by 0.3–0.7% at α ≤ 0.5 and the first Sonine is within 0.3% at 15 of them; the converged state is
-// within 0.27% at all 18, and MG Fig. 2's c_k 10–12% below the first Sonine at α = 0.3, as DSMC (README, "The converged
-// HCS"). Constant restitution only (a viscoelastic gas has no HCS).
+// within 0.27% at all 18, and MG Fig. 2's c_k 10–12% below the first Sonine at α = 0.3, as DSMC (docs/levels.md,
+// "The converged HCS"). Constant restitution only (a viscoelastic gas has no HCS).
 // Its settled distributions Φ_k are the solved speed densities themselves, no Sonine form at all (MG Figs. 3, 7), solved
 // with a finer collision rule and every partner through its full solved density (converged_distribution: why); their
 // model error is computed per bin by four companions from that solve — "-knots" (knots 3/2 as far apart), "-rule" (the
@@ -59,7 +59,7 @@ class HcsConvergedLevel final : public TheoryLevel {
   // by the same grid; its relative error over the same bin in thermal widths (λ_k: the inelastic state's). Why: the
   // variants' changes (knots, rule) under-estimate the grid's pointwise error up to ~3× in places — the elastic MG
   // Fig. 3 mixture's bins of 0.05 err by 0.05–0.5% between one and two thermal widths where the variants move them by
-  // 0.02–0.3% (measured 2026-12-05) — so both parts enter the model error.
+  // 0.02–0.3% — so both parts enter the model error.
   static std::function<double(std::size_t, double, double)> elastic_bin_error(const CollisionRates& rates, std::vector<double> lambda) {
     const CollisionRates elastic(rates.mixture(), model::Restitution::constant(rates.size(), 1.0), rates.contact_values());
     return [e = converged_distribution(elastic, DistributionVariant::solved), lambda = std::move(lambda)](std::size_t k, double lo, double hi) {

@@ -19,10 +19,10 @@
 
 namespace granmix::theory {
 
-// The kinetic level (physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
+// The kinetic level (docs/physics-beyond.md §2, §4): temperatures with the first-Sonine (Garzó–Dufty)
 // cooling rates and cumulants relaxing from the Maxwellian start (what DSMC does); the MSD by the VACF
 // ODE (transients included) with kinetic_sonine_order Sonine modes per species (SonineDecay: the first-Sonine
-// decay from the start, D_k[M] in the diffusive regime, physics-beyond §3); settled states from
+// decay from the start, D_k[M] in the diffusive regime, docs/physics-beyond.md §3); settled states from
 // the first-Sonine HCS. The pair integrals follow the restitution law (sonine_pair_terms.hpp): closed forms
 // at constant ε, a quadrature over the normal impact speed for a viscoelastic law, whose cumulants then
 // follow a drifting quasi-state (ε → 1 as the gas cools) and which has no HCS: its settled ratios stay the
@@ -68,7 +68,7 @@ inline bool sonine_applies(const CollisionRates& rates) {
 // "kinetic-sonineN" the same level with D_k[N] — N = 1: one VACF mode at ν_k = τ_v,k⁻¹ + ζ_k/2, D_k[1]
 // settled. A lower order's difference to the kinetic level is the size of its last Sonine corrections
 // (a scene's correction_from = "sonineN").
-// Two variants beyond it, not the judged default (README, "Temperatures at Sonine order 3"): "kinetic-cooling3"
+// Two variants beyond it, not the judged default (docs/levels.md, "Temperatures at Sonine order 3"): "kinetic-cooling3"
 // (cooling_order 3: a₂ and a₃ relaxing, sonine_moment_cooling.hpp; its temperatures follow DSMC closer) and
 // "kinetic-cooling3-shaped" (also the species' a₂, a₃ in the velocity modes, SonineDecay's shaped form).
 class KineticLevel final : public TheoryLevel {
@@ -87,7 +87,7 @@ class KineticLevel final : public TheoryLevel {
   SettledDiffusion diffusion_at(const CollisionRates& rates, std::vector<double> T) const override {
     SettledDiffusion d = theory::diffusion_at(rates, T);
     if (!sonine_applies(rates) || order_ < 2) return d;
-    // D_k[M] (physics-beyond §3); where the expansion has no diffusive solution (NaN, a
+    // D_k[M] (docs/physics-beyond.md §3); where the expansion has no diffusive solution (NaN, a
     // large rare grain near the Santos–Dufty edge) the first-Sonine D stays.
     for (std::size_t k = 0; k < T.size(); ++k) {
       const double f = sonine_factor(rates, k, T.data(), order_);
