@@ -8,6 +8,7 @@
 #include <string>
 
 #include "model/errors.hpp"
+#include "model/observable_catalogue.hpp"
 #include "theory/levels/level_catalogue.hpp"
 #include "theory/scene_theory.hpp"
 
@@ -112,4 +113,26 @@ TEST_CASE("every companion names a declared level, and the scene levels' compani
   // Synonyms find their level: D to Sonine order 4 is the kinetic level's own.
   CHECK(&find_level("kinetic-sonine4") == &find_level("kinetic"));
   CHECK(&find_level("kinetic-cooling3-sonine4") == &find_level("kinetic-cooling3"));
+}
+
+TEST_CASE("the observables' catalogue: each quantity declared by one observable, and the scene checks allow exactly those", "[theory]") {
+  std::set<std::string> seen;
+  for (const model::ObservableDescriptor& d : model::observable_catalogue())
+    for (const std::string& q : d.quantities) {
+      INFO(q);
+      CHECK(seen.insert(q).second);  // one owner per column
+    }
+  CHECK(seen.size() == model::observable_quantities().size());
+  const std::string scene = toy_scene("[dsmc]\nquick = { particles = 1000, replicas = 2 }\npaper = { particles = 1000, replicas = 2 }\n[compare]\n");
+  // A name the catalogue does not declare is refused, and the message lists every declared one.
+  try {
+    load_scene_text(scene + "quantities = [{ name = \"pressure\", why = \"w\" }]\n", "toy.toml");
+    FAIL("an undeclared quantity must be refused");
+  } catch (const InputError& e) {
+    for (const std::string& q : model::observable_quantities()) CHECK_THAT(e.what(), Catch::Contains("\"" + q + "\""));
+  }
+  // Every declared name is allowed (the scene asks for temperatures only: the check of names comes first).
+  CHECK_NOTHROW(load_scene_text(scene + "quantities = [{ name = \"T\", why = \"w\" }]\n", "toy.toml"));
+  // The listing names every key.
+  for (const std::string& k : model::observable_keys()) CHECK_THAT(model::observable_listing(true), Catch::Contains("`" + k + "`"));
 }
