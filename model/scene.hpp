@@ -76,17 +76,16 @@ struct DsmcSettings {
 // theory's computed model error, z · dsmc_err the statistical part (the two add: a point can carry
 // both); `species` and `t_min` restrict a tolerance to where it applies.
 struct CompareQuantity {
-  std::string name;             // a column of both tables: T, msd, gamma, c, tamsd, t_s
+  std::string name;             // a quantity column of both tables (model/observable_catalogue.hpp)
   std::string theory;           // the theory column that predicts the DSMC column `name` (default: name)
   // Model error computed point by point as the size of the judged theory's last or next correction:
-  // |theory − theory_<correction_from>| / |theory| ("paper": the paper level; "maxwell": the
-  // Maxwellian column of a Sonine quantity; "sonine1": the kinetic level with first-Sonine D, i.e. the
-  // size of its second-Sonine correction; "cooling3": the level kinetic-cooling3, i.e. the next Sonine order
-  // (a₃) of first-Sonine temperatures and HCS), added to `relative`. Several: the largest of them at each point
-  // (the corrections of independent truncations). Empty: `relative` alone.
+  // |theory − theory_<correction_from>| / |theory|, each name a companion of the judged level (the level with one
+  // part changed: theory/levels/level_catalogue.hpp, docs/judging.md §3.2) or "maxwell" (the Maxwellian column of a
+  // Sonine quantity), added to `relative`. Several: the largest of them at each point (the corrections of independent
+  // truncations). Empty: `relative` alone.
   std::vector<std::string> correction_from;
-  // A theory column holding the judged level's own computed model error at each point (relative), added too:
-  // "D_ratio_error" (kinetic-converged-hcs, theory/grid/converged_hcs_diffusion.hpp). Empty: none.
+  // A theory column holding the judged level's own computed model error at each point (relative), added too: one of
+  // the error columns the level declares in the catalogue. Empty: none.
   std::string error_column;
   // The resolution the judged level claims for this quantity (relative): a judged point whose model error (relative
   // + the computed parts) exceeds it fails as unresolved, whatever DSMC says. A bound computed from companions widens
