@@ -61,9 +61,10 @@ int run(const DsmcOptions& o) {
   std::printf("  method %s, %zu species, %zu particles x %zu replicas, %llu collisions, %llu trial pairs\n",
               dsmc::to_string(r.method), r.species, r.particles, r.replicas, static_cast<unsigned long long>(r.accepted),
               static_cast<unsigned long long>(r.trials));
-  std::printf("  CPU by phase: set-up %.2f s, event loop (select + collide) %.2f s, sampling %.2f s\n", r.seconds_setup,
+  // Each replica's phases by a steady clock, summed over replicas: its CPU time on an idle core, more on a loaded one.
+  std::printf("  replica time by phase: set-up %.2f s, event loop (select + collide) %.2f s, sampling %.2f s\n", r.seconds_setup,
               r.seconds_loop, r.seconds_sample);
-  std::printf("  acceptance %.3f, %.3g collisions/s per core, wall %.2f s on %d rank(s) x %d thread(s), peak memory %.1f MB\n",
+  std::printf("  acceptance %.3f, %.3g collisions/s per replica-second, wall %.2f s on %d rank(s) x %d thread(s), peak memory %.1f MB\n",
               r.acceptance(), r.collisions_per_second(), replicas.wall_seconds, replicas.ranks, replicas.threads, ru.ru_maxrss / 1024.0);
   return 0;
 }
