@@ -6,9 +6,11 @@
 
 #include <atomic>
 #include <cerrno>
+#include <condition_variable>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <system_error>
 #include <thread>
 #include <vector>
@@ -126,6 +128,42 @@ void set_stop_request(dsmc::StopRequest* stop, const std::filesystem::path& dir)
   std::lock_guard lock(s.mutex);
   s.checkpoint_dir = dir;
   s.stop = stop;
+}
+
+void run_stoppable(const std::function<void(const dsmc::StopRequest&)>& work, const std::function<bool()>& interrupted,
+                   std::chrono::milliseconds poll) {
+  dsmc::StopRequest stop;
+  std::mutex m;
+  std::condition_variable finished;
+  bool done = false;
+  std::exception_ptr failure;
+  std::thread worker([&] {
+    try {
+      work(stop);
+    } catch (...) {
+      failure = std::current_exception();
+    }
+    std::lock_guard lock(m);
+    done = true;
+    finished.notify_all();
+  });
+  bool stopped = false;
+  try {
+    for (;;) {
+      {
+        std::unique_lock lock(m);
+        if (finished.wait_for(lock, poll, [&] { return done; })) break;
+      }
+      if (!stopped && interrupted()) stopped = true, stop.abandon();
+    }
+  } catch (...) {  // `interrupted` itself failed: stop the work all the same
+    stop.abandon();
+    worker.join();
+    throw;
+  }
+  worker.join();
+  if (stopped) throw Interrupted();
+  if (failure) std::rethrow_exception(failure);
 }
 
 WriteGuard::WriteGuard() : lock_(state().mutex) {}

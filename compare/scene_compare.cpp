@@ -32,7 +32,37 @@ double max_relative_difference(const model::Table& a, const model::Table& b) {
   return worst;
 }
 
-nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std::uint64_t seed, const std::string& fidelity) {
+}  // namespace
+
+SceneEvaluation evaluate_scene(const model::Scene& s, const dsmc::RunOptions& opt) {
+  SceneEvaluation e;
+  SceneOutcome& o = e.outcome;
+  o.scene = s.name;
+  const auto tables = std::make_shared<theory::GalerkinPairTables>();  // the converged levels' pair tables, built once
+  e.theory = theory::run_theory(s, tables);
+  o.theory_seconds = e.theory.seconds;
+  if (theory::theory_uses_rtol(s)) {  // error estimate: the same scene at 100× tighter tolerance (speed against error: docs/performance.md), on the same tables
+    model::Scene tight = s;
+    tight.theory.rtol = std::max(1e-14, s.theory.rtol / 100.0);
+    o.theory_error = max_relative_difference(e.theory.table, theory::run_theory(tight, tables).table);
+  }
+  if (s.dsmc.present) {
+    e.dsmc = dsmc::run_scene_dsmc(s, opt);
+    o.dsmc_seconds = e.dsmc.result.seconds, o.collisions = double(e.dsmc.result.accepted);
+    o.collisions_per_second = e.dsmc.result.collisions_per_second(), o.acceptance = e.dsmc.result.acceptance();
+    o.particles = e.dsmc.result.particles, o.replicas = e.dsmc.result.replicas;
+  }
+  o.compared = !s.compare.empty() && s.dsmc.present;
+  o.pass = true;
+  if (o.compared) {
+    e.deviations = deviations(e.theory.table, e.dsmc.table, s.compare);
+    o.quantities = summarise(e.deviations, s.compare);
+    for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
+  }
+  return e;
+}
+
+nlohmann::ordered_json report_json(const model::Scene& s, const SceneOutcome& o, std::uint64_t seed, const std::string& fidelity) {
   nlohmann::ordered_json j;
   j["scene"] = s.name;
   j["source"] = s.source;
@@ -65,13 +95,10 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   return j;
 }
 
-}  // namespace
-
 SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const dsmc::RunOptions& opt) {
   const std::string& fidelity = opt.fidelity;
   const std::uint64_t seed = opt.seed;
   SceneOutcome o;
-  o.scene = s.name;
   const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
   {
     interrupts::WriteGuard g;  // an interrupt removes the staging folder, never leaves it half made
@@ -81,43 +108,25 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     interrupts::set_staging(tmp);
   }
   try {
+    const SceneEvaluation e = evaluate_scene(s, opt);
+    o = e.outcome;
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
-    const auto tables = std::make_shared<theory::GalerkinPairTables>();  // the converged levels' pair tables, built once
-    const theory::TheoryResult th = theory::run_theory(s, tables);
-    o.theory_seconds = th.seconds;
-    if (theory::theory_uses_rtol(s)) {  // error estimate: the same scene at 100× tighter tolerance (speed against error: docs/performance.md), on the same tables
-      model::Scene tight = s;
-      tight.theory.rtol = std::max(1e-14, s.theory.rtol / 100.0);
-      o.theory_error = max_relative_difference(th.table, theory::run_theory(tight, tables).table);
-    }
-    write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), th.table));
-    const model::Table* dsmc_table = nullptr;
-    dsmc::DsmcRun run;
+    write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), e.theory.table));
     if (s.dsmc.present) {
-      run = dsmc::run_scene_dsmc(s, opt);
       Provenance pd = p;
       pd.seed = std::to_string(seed) + " (replica r uses stream (seed, r))", pd.fidelity = fidelity;
-      write_atomically(tmp / "dsmc.tsv", format_tsv(provenance_header(pd), run.table));
-      if (!run.distribution.rows.empty()) write_atomically(tmp / "distribution.tsv", format_tsv(provenance_header(pd), run.distribution));
-      dsmc_table = &run.table;
-      o.dsmc_seconds = run.result.seconds, o.collisions = double(run.result.accepted);
-      o.collisions_per_second = run.result.collisions_per_second(), o.acceptance = run.result.acceptance();
-      o.particles = run.result.particles, o.replicas = run.result.replicas;
+      write_atomically(tmp / "dsmc.tsv", format_tsv(provenance_header(pd), e.dsmc.table));
+      if (!e.dsmc.distribution.rows.empty()) write_atomically(tmp / "distribution.tsv", format_tsv(provenance_header(pd), e.dsmc.distribution));
     }
-    o.compared = !s.compare.empty() && dsmc_table != nullptr;
-    o.pass = true;
     if (o.compared) {
-      const std::vector<Deviation> d = deviations(th.table, *dsmc_table, s.compare);
-      o.quantities = summarise(d, s.compare);
-      for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
       Provenance pd = p;
       pd.seed = std::to_string(seed), pd.fidelity = fidelity;
-      write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), th.table.columns.front(), d));
+      write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), e.theory.table.columns.front(), e.deviations));
     }
     interrupts::WriteGuard g;  // figure, report and rename: finished together or not at all
-    o.figure = write_figure(tmp, s, th.table, dsmc_table).message;
-    write_atomically(tmp / "report.json", report(s, o, seed, fidelity).dump(2) + "\n");
+    o.figure = write_figure(tmp, s, e.theory.table, s.dsmc.present ? &e.dsmc.table : nullptr).message;
+    write_atomically(tmp / "report.json", report_json(s, o, seed, fidelity).dump(2) + "\n");
     std::filesystem::remove_all(out / s.name);
     std::filesystem::rename(tmp, out / s.name);  // the scene folder appears complete or not at all
     interrupts::set_staging({});

@@ -2,6 +2,8 @@
 // One scene compared end to end (docs/architecture.md §3): theory (and its error estimate from a rerun at
 // 100× tighter tolerance), DSMC, deviations, report.json and the figure, written to a temporary
 // folder beside DIR/<scene> and renamed into place only when complete.
+#include <nlohmann/json.hpp>
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -10,6 +12,7 @@
 #include "deviations.hpp"
 #include "dsmc/scene_dsmc.hpp"
 #include "model/scene.hpp"
+#include "theory/scene_theory.hpp"
 
 namespace granmix::compare {
 
@@ -23,6 +26,20 @@ struct SceneOutcome {
   std::size_t particles = 0, replicas = 0;
   std::string figure;
 };
+
+// What compare_scene computes, before anything is written: the theory (and its error estimate), the DSMC (when the
+// scene has [dsmc]), the deviations and each compared quantity's summary; the outcome without its figure. The Python
+// module's granmix.compare.
+struct SceneEvaluation {
+  theory::TheoryResult theory;
+  dsmc::DsmcRun dsmc;  // no table without [dsmc]
+  std::vector<Deviation> deviations;
+  SceneOutcome outcome;
+};
+SceneEvaluation evaluate_scene(const model::Scene& scene, const dsmc::RunOptions& run);
+
+// report.json of a scene (docs/architecture.md §4).
+nlohmann::ordered_json report_json(const model::Scene& scene, const SceneOutcome& outcome, std::uint64_t seed, const std::string& fidelity);
 
 // run: fidelity, seed, threads and, under MPI or with checkpoints, where replicas come from.
 SceneOutcome compare_scene(const model::Scene& scene, const std::filesystem::path& out, const dsmc::RunOptions& run);

@@ -81,6 +81,7 @@ struct DsmcSetup {
   std::string unit_key, scene_sha256;
   const ReplicaSource* source = nullptr;          // none: every replica computed here
   const Checkpointing* checkpoint = nullptr;      // none: no snapshots
+  const StopRequest* stop = nullptr;              // a host's abandoning stop (stop_request.hpp); none: runs to the end
 };
 
 // Mean and standard error over independent replicas of a vector of observables, and each

@@ -123,6 +123,8 @@ class ReplicaCheckpoint {
   ReplicaCheckpoint(const DsmcSetup& s, std::size_t r)
       : s_(s), r_(r), on_(s.checkpoint != nullptr && !s.unit_key.empty()), last_(std::chrono::steady_clock::now()) {}
   bool on() const { return on_; }
+  // Whether the loop needs the refresh hook: for snapshots, or to be abandoned (stop_request.hpp).
+  bool hooked() const { return on_ || s_.stop != nullptr; }
   // The snapshot to resume from, if the folder has one (verified against the set-up).
   std::optional<ReplicaSnapshot> resume_point() const {
     if (!on_) return std::nullopt;
@@ -138,6 +140,7 @@ class ReplicaCheckpoint {
   // the replica's state to the snapshot, fill(snapshot, false) takes it back.
   template <class Fill>
   void at_refresh(Fill fill) {
+    if (s_.stop) s_.stop->throw_if_abandoned();
     if (!on_) return;
     const bool stop = s_.checkpoint->stop && s_.checkpoint->stop->requested();
     const auto now = std::chrono::steady_clock::now();
@@ -223,7 +226,7 @@ ReplicaRecord run_event_replica(const DsmcSetup& s, const PairTable& pairs, std:
   EventLoop<Selector> loop(p, sel, s.law, rng, c, p.size());
   if (snap) loop.resume(snap->loop, snap->counters);
   std::size_t stop = first;
-  if (ck.on())
+  if (ck.hooked())
     loop.at_refresh([&] {
       ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
         if (lending) x.aging = aging, x.stop = stop, x.rng = rng.state(), x.loop = loop.state(), x.counters = c;
@@ -284,7 +287,7 @@ ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, 
   Counters c;
   TimeStepScheme scheme(p, pairs, s.law, rng, c, s.time_step_factor);
   if (snap) scheme.resume(snap->loop, snap->counters);
-  if (ck.on())
+  if (ck.hooked())
     scheme.after_step([&] {
       ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
         if (lending) x.stop = j, x.rng = rng.state(), x.loop = scheme.state(), x.counters = c;
@@ -340,6 +343,7 @@ ReplicaRecord run_replica(const DsmcSetup& s, const PairTable& pairs, std::size_
     const auto done = done_path(s, r);
     if (const auto bytes = read_checkpoint_file(done)) return decode_done(*bytes, done.string(), snapshot_identity(*s.checkpoint, s, r));
   }
+  if (s.stop) s.stop->throw_if_abandoned();  // abandoned: start nothing new
   StopRequest* stop = ck.on() ? s.checkpoint->stop : nullptr;
   if (stop && !stop->enter()) StopRequest::wait_for_exit();  // stopping: start nothing new
   try {

@@ -223,7 +223,7 @@ DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
   d.scene_sha256 = model::sha256_hex(s.text);
   // Scene, fidelity and seed name the run: a sweep point's seed is its own (point_seed).
   d.unit_key = s.name + "." + fidelity + ".seed" + std::to_string(opt.seed) + "." + d.scene_sha256.substr(0, 12);
-  d.source = opt.source, d.checkpoint = opt.checkpoint;
+  d.source = opt.source, d.checkpoint = opt.checkpoint, d.stop = opt.stop;
   return d;
 }
 

@@ -22,13 +22,14 @@ struct DsmcRun {
 
 // How a scene's DSMC runs: fidelity "quick" or "paper" (particles, replicas of the scene's [dsmc]),
 // master seed, threads; replicas already computed by other
-// MPI ranks (source) and checkpointing, both optional.
+// MPI ranks (source), checkpointing and a host's abandoning stop (dsmc/stop_request.hpp), all optional.
 struct RunOptions {
   std::string fidelity = "quick";
   std::uint64_t seed = 1;
   int threads = 0;
   const ReplicaSource* source = nullptr;
   const Checkpointing* checkpoint = nullptr;
+  const StopRequest* stop = nullptr;
 };
 
 DsmcRun run_scene_dsmc(const model::Scene& scene, const RunOptions& options);

@@ -18,6 +18,9 @@ packages=(
   libpcg-cpp-dev       # random streams for DSMC
   libopenmpi-dev openmpi-bin  # MPI: DSMC units over ranks (GRANMIX_MPI, compare/scheduler.cpp)
   python3              # make mutants (tests/mutants/run_mutants.py, standard library only)
+  python3-dev pybind11-dev    # the Python module granmix (python/, GRANMIX_PYTHON)
+  python3-numpy python3-pytest  # its arrays and its tests (tests/python)
+  python3-matplotlib   # examples/python/ternary.py's figure (its test is skipped without it)
   ccache               # make mutants rebuilds incrementally
 )
 if [ "${1:-}" = "--fuzz" ]; then  # make fuzz only: libFuzzer and the clang sanitizer runtimes

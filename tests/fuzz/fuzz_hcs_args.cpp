@@ -1,4 +1,4 @@
-// libFuzzer harness: the `granmix hcs` command line (compare/command_hcs.cpp) parsed by the same CLI11
+// libFuzzer harness: the `granmix hcs` command line (compare/command_hcs.cpp, hcs_summary.cpp) parsed by the same CLI11
 // app as main.cpp and run. The input is the argument list, one argument per line. Accepted outcomes
 // are those main.cpp maps to exit 2 (usage, InputError, invalid_argument) or 3 (NumericalError,
 // domain_error); anything else (crash, logic error, sanitizer report, > 2 s) is a finding.

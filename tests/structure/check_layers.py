@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Fails on an include that points up the layers (docs/architecture.md §2).
 
-Folders: model < theory, dsmc < bench < compare; tests, scripts and tools may include anything.
+Folders: model < theory, dsmc < bench < compare < python (the module's bindings); tests, scripts and tools may include
+anything.
 Inside theory/, the wings: numerics < rates < histories < sonine < grid < levels < the door (theory/*.hpp).
 A file may include its own layer or wing and those below it, never one above."""
 import pathlib
@@ -9,7 +10,7 @@ import re
 import sys
 
 ROOT = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else '.').resolve()
-LAYERS = {'model': 0, 'theory': 1, 'dsmc': 1, 'bench': 2, 'compare': 3}
+LAYERS = {'model': 0, 'theory': 1, 'dsmc': 1, 'bench': 2, 'compare': 3, 'python': 4}
 # dsmc may ask theory for an initial state (the HCS ratios), never the other way round.
 ALLOWED_SIDEWAYS = {('dsmc', 'theory')}
 WINGS = ['numerics', 'rates', 'histories', 'sonine', 'grid', 'levels']
