@@ -14,7 +14,7 @@ SANITIZE_LABELS ?= model|theory|compare|hard|property|fuzz
 SANITIZE_TARGETS ?= granmix granmix_tests_model granmix_tests_theory granmix_tests_compare granmix_tests_hard \
   granmix_tests_property granmix_tests_bench replay_scene replay_hcs_args replay_tsv_roundtrip replay_checkpoint
 
-.PHONY: deps build test validate figures bench sanitize fuzz mutants clean
+.PHONY: deps build test install validate figures bench sanitize fuzz mutants clean
 
 deps:
 	@scripts/install-deps.sh
@@ -30,6 +30,14 @@ CTEST_ENV = OMP_WAIT_POLICY=passive
 
 test: build
 	cd $(BUILD) && $(CTEST_ENV) ctest --output-on-failure -j$(JOBS)
+	@$(MAKE) --no-print-directory install
+
+# The Python module (docs/python.md) where the system's python3 finds it; without the rights to write there, a note.
+install: build
+	@if [ -d $(BUILD)/python/granmix ]; then \
+	  cmake --install $(BUILD) > /dev/null 2>&1 && echo "install: the Python module granmix is installed (python3 -c 'import granmix'; docs/python.md)" || \
+	  echo "install: the Python module is in $(BUILD)/python (PYTHONPATH=$(BUILD)/python); cmake --install $(BUILD) as root installs it"; \
+	else echo "install: no Python module was built (python3-dev, pybind11-dev: scripts/install-deps.sh)"; fi
 
 validate: build
 	@$(BUILD)/granmix validate --fidelity quick --out $(OUT)
