@@ -5,8 +5,9 @@ Each mutant of mutants.toml is a few exact text edits applied to a scratch copy 
 tree (git archive of HEAD or MUTANTS_REV, kept between runs so rebuilds are incremental; the real
 tree is never edited). Per mutant the stages are: build granmix, `granmix validate --fidelity quick`,
 and only if validate passes, build the tests and run ctest (without the tests labelled `checkout`,
-which need the git checkout and the unmutated tree); then the files are restored. A mutant whose
-search text is not found exactly once is `stale`, never skipped silently.
+which need the git checkout and the unmutated tree); then the files are restored. Before the first
+mutant, ctest runs once on the unmutated tree: a test that fails there is not counted for any mutant.
+A mutant whose search text is not found exactly once is `stale`, never skipped silently.
 
 Each mutant gets one outcome, from the first stage that does not pass:
   caught: deviation     validate exit 1 with a failing scene:quantity row, or a failing ctest test
@@ -223,16 +224,20 @@ def ctest_failures(out: str):
     return failed
 
 
-def classify_ctest(rc, out: str):
+def classify_ctest(rc, out: str, baseline=frozenset()):
     """None if every test passes, else (outcome, detail). A failing test is a catch; a test that only
-    timed out or crashed is not."""
+    timed out or crashed is not. Tests of the baseline (those that fail on the unmutated tree) are
+    not counted."""
     if rc == 0:
         return None
     if rc is None:
         return TIMED_OUT, f"ctest: timeout after {TIMEOUT:g} s"
     if rc < 0:
         return CRASH, f"ctest: {signal_name(rc)}"
-    tests = ctest_failures(out)
+    listed = ctest_failures(out)
+    tests = [(n, r) for n, r in listed if n not in baseline]
+    if listed and not tests:
+        return None
     failed = [n for n, r in tests if r == "Failed"]
     timed_out = [n for n, r in tests if r == "Timeout"]
     crashed = [f"{n} ({r})" for n, r in tests if r not in ("Failed", "Timeout")]
@@ -247,7 +252,7 @@ def classify_ctest(rc, out: str):
 
 
 def run_stages(build_cmds, validate_cmd, build_tests_cmds, ctest_cmd, logs: Path, mid: str, out_dir: Path,
-               cwd=None, ctest_cwd=None, ctest_tmp=None):
+               cwd=None, ctest_cwd=None, ctest_tmp=None, baseline=frozenset()):
     """The stages of one mutant, stopping at the first that does not pass: (outcome, stage, detail)."""
     r = stage_build(build_cmds, logs / f"{mid}.build.log", "granmix")
     if r:
@@ -260,7 +265,7 @@ def run_stages(build_cmds, validate_cmd, build_tests_cmds, ctest_cmd, logs: Path
     if r:
         return r[0], "build-tests", r[1]
     rc, out = run(ctest_cmd, logs / f"{mid}.ctest.log", cwd=ctest_cwd, tmp=ctest_tmp)
-    r = classify_ctest(rc, out)
+    r = classify_ctest(rc, out, baseline)
     if r:
         return r[0], "ctest", r[1]
     return MISSED, "", ""
@@ -292,7 +297,23 @@ def apply_edits(m, src: Path):
     return originals, None
 
 
-def run_mutant(m, src: Path, bld: Path, logs: Path):
+def ctest_cmd():
+    return ["ctest", "-j", str(JOBS), "-LE", SCRATCH_EXCLUDED_LABEL, "--timeout", f"{TEST_TIMEOUT:g}"]
+
+
+def baseline_failures(src: Path, bld: Path, logs: Path):
+    """The tests that fail on the unmutated tree: they cannot tell a mutant from the tree, so they are not
+    counted. Exits if the tests do not build or ctest does not finish."""
+    r = stage_build(build_cmds(src, bld)[1:], logs / "pristine.build-tests.log", "tests")
+    if r:
+        sys.exit(f"mutants: the unmutated tree's tests: {r[0]} ({r[1]})")
+    rc, out = run(ctest_cmd(), logs / "pristine.ctest.log", cwd=bld, tmp=bld.parent / "tmp")
+    if rc is None or rc < 0 or (rc != 0 and not ctest_failures(out)):
+        sys.exit(f"mutants: ctest on the unmutated tree did not finish (see {logs / 'pristine.ctest.log'})")
+    return frozenset(n for n, _ in ctest_failures(out))
+
+
+def run_mutant(m, src: Path, bld: Path, logs: Path, baseline=frozenset()):
     originals, why = apply_edits(m, src)
     if originals is None:
         return STALE, "", why
@@ -300,11 +321,10 @@ def run_mutant(m, src: Path, bld: Path, logs: Path):
         with tempfile.TemporaryDirectory(prefix="granmix-mutant-") as out_dir:
             validate = [str(bld / "granmix"), "validate", "--fidelity", "quick", "--out", out_dir, "--threads", str(JOBS),
                         "--scenes", str(src / "compare" / "scenes")]
-            ctest = ["ctest", "-j", str(JOBS), "-LE", SCRATCH_EXCLUDED_LABEL, "--timeout", f"{TEST_TIMEOUT:g}"]
             # The tests are built only when validate has not caught the mutant: that saves recompiling every
             # test that includes a mutated header.
-            return run_stages(build_cmds(src, bld, "granmix"), validate, build_cmds(src, bld)[1:], ctest, logs, m["id"],
-                              Path(out_dir), cwd=src, ctest_cwd=bld, ctest_tmp=bld.parent / "tmp")
+            return run_stages(build_cmds(src, bld, "granmix"), validate, build_cmds(src, bld)[1:], ctest_cmd(), logs,
+                              m["id"], Path(out_dir), cwd=src, ctest_cwd=bld, ctest_tmp=bld.parent / "tmp", baseline=baseline)
     finally:
         for f, t in originals.items():
             (src / f).write_text(t)
@@ -588,13 +608,17 @@ def self_test():
             ("a ctest test crashes", passing, passing, passing,
              sh(f"printf '{ctest_out.format('SEGFAULT', 'Timeout')}'; exit 8"), (CRASH, "ctest")),
             ("ctest sleeps beyond the timeout", passing, passing, passing, sh("sleep 30"), (TIMED_OUT, "ctest")),
+            ("only a test that fails on the unmutated tree fails", passing, passing, passing,
+             sh(f"printf '{ctest_out.format('Failed', 'Failed').replace(chr(10) + chr(9) + '  9 - theory: b (Failed)', '')}'; exit 8"),
+             (MISSED, "")),
         ]
         rows = []
         for name, b, v, bt, ct, want in cases:
             for f in out_dir.iterdir():
                 f.unlink()
             start = time.monotonic()
-            status, stage, detail = run_stages([b], v, [bt], ct, logs, "stub", out_dir)
+            baseline = frozenset({"model: a test"}) if "unmutated" in name else frozenset()
+            status, stage, detail = run_stages([b], v, [bt], ct, logs, "stub", out_dir, baseline=baseline)
             expect(name, (status, stage), want)
             rows.append({"id": f"stub-{len(rows) + 1}", "kind": "random" if len(rows) % 2 else "hand", "size_pct": 3,
                          "status": status, "stage": stage, "caught_by": detail,
@@ -603,6 +627,8 @@ def self_test():
         expect("the stopped scene is named", rows[2]["caught_by"], "validate: s:ERROR (solver gave up)")
         expect("a failing ctest test is named, its timeouts noted",
                classify_ctest(8, ctest_out.format("Failed", "Timeout"))[1], "ctest: model: a test [timeout: theory: b]")
+        expect("a test failing on the unmutated tree is not counted, another one is",
+               classify_ctest(8, ctest_out.format("Failed", "Failed"), frozenset({"model: a test"}))[1], "ctest: theory: b")
         # A timed-out stage leaves no process behind (its whole session is killed).
         pidfile = tmp / "pid"
         rc, _ = run(sh(f"sleep 30 & echo $! > {pidfile}; wait"), logs / "orphan.log", timeout=1)
@@ -619,8 +645,8 @@ def self_test():
         # rate, build failures are left out of it.
         md = write_results(rows, f"# granmix mutants: git {'a' * 40} date - self-test (stub stages)", [r["id"] for r in rows],
                            tmp / "results")
-        expect("kill rate over the stub mutants", kill_rate(rows), (4, 12))
-        expect("the table reports a miss", "| missed |" in md and f"{MISSED} 1" in md, True)
+        expect("kill rate over the stub mutants", kill_rate(rows), (4, 13))
+        expect("the table reports the misses", "| missed |" in md and f"{MISSED} 2," in md, True)
         expect("hand-picked and random rates apart",
                [l.split(":")[0] for l in summary_lines(rows)], ["outcomes", "hand-picked", "random"])
         expect("one commit per table: a subset of the same commit adds to it, of another commit does not",
@@ -668,6 +694,7 @@ def main():
     mutants, subset = load_mutants()
     if "--check" in args:
         sys.exit(check(mutants))
+    signal.signal(signal.SIGTERM, lambda *_: sys.exit(143))  # as SIGINT: kill the stage, restore the files
     order = [m["id"] for m in all_mutants()]
     sha = git("rev-parse", REV)
     if REV == "HEAD" and git("status", "--porcelain", "--untracked-files=no"):
@@ -687,11 +714,16 @@ def main():
     r = stage_build(build_cmds(src, bld, "granmix"), logs / "pristine.build.log", "granmix")
     if r:
         sys.exit(f"mutants: the unmutated tree does not build ({r[0]}; see {logs / 'pristine.build.log'})")
+    baseline = baseline_failures(src, bld, logs)
+    if baseline:
+        print(f"mutants: {len(baseline)} tests fail on the unmutated tree and are not counted: {' | '.join(sorted(baseline))}",
+              flush=True)
     date = datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%dT%H:%M:%SZ")
-    provenance = f"# granmix mutants: git {sha} date {date} validate --fidelity quick, then ctest -LE {SCRATCH_EXCLUDED_LABEL}"
+    provenance = (f"# granmix mutants: git {sha} date {date} validate --fidelity quick, then ctest -LE {SCRATCH_EXCLUDED_LABEL}"
+                  + (f"; not counted, failing unmutated: {' | '.join(sorted(baseline))}" if baseline else ""))
     for i, m in enumerate(mutants, 1):
         start = time.monotonic()
-        status, stage, caught_by = run_mutant(m, src, bld, logs)
+        status, stage, caught_by = run_mutant(m, src, bld, logs, baseline)
         files = ",".join(dict.fromkeys(e["file"] for e in m["edits"]))
         rows[m["id"]] = {"id": m["id"], "kind": m["kind"], "size_pct": m["size"], "status": status, "stage": stage,
                          "caught_by": caught_by, "seconds": round(time.monotonic() - start), "files": files,
