@@ -14,6 +14,8 @@
 #include "theory/grid/galerkin_decay.hpp"
 #include "theory/scene_theory.hpp"
 #include "interrupts.hpp"
+#include "model/errors.hpp"
+#include "scene_folder.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -49,6 +51,7 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
                                     {"failed", q.failed},
                                     {"unresolved", q.unresolved},
                                     {"why", q.spec.why}};
+    if (!q.not_judged.empty()) j["quantities"][label(q.spec)]["not_judged"] = q.not_judged;
     if (std::isfinite(q.max_paper_rel)) j["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
   }
   j["theory_seconds"] = o.theory_seconds;
@@ -62,16 +65,26 @@ nlohmann::ordered_json report(const model::Scene& s, const SceneOutcome& o, std:
   j["seed"] = seed;
   j["fidelity"] = fidelity;
   j["figure"] = o.figure;
+  j["warnings"] = o.warnings;
   return j;
 }
 
 }  // namespace
+
+void require_dsmc_for_compare(const model::Scene& s) {
+  if (!s.compare.empty() && !s.dsmc.present)
+    throw InputError(s.file + ": compare: judging needs a [dsmc] table (allowed: [dsmc] with quick = { particles = N, replicas = R })");
+}
 
 SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const dsmc::RunOptions& opt) {
   const std::string& fidelity = opt.fidelity;
   const std::uint64_t seed = opt.seed;
   SceneOutcome o;
   o.scene = s.name;
+  require_dsmc_for_compare(s);
+  // theory.tsv and dsmc.tsv of one scene file only: a folder of another's outputs is moved aside first.
+  if (auto moved = set_aside_other_scene(out, s.name, model::sha256_hex(s.text))) o.warnings.push_back(*moved);
+  for (const std::string& n : dsmc::run_notes(s, fidelity)) o.warnings.push_back(n);
   const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
   {
     interrupts::WriteGuard g;  // an interrupt removes the staging folder, never leaves it half made
@@ -110,7 +123,18 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     if (o.compared) {
       const std::vector<Deviation> d = deviations(th.table, *dsmc_table, s.compare);
       o.quantities = summarise(d, s.compare);
-      for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
+      for (auto& q : o.quantities) {
+        o.pass = o.pass && q.pass();
+        if (!q.not_judged.empty()) q.max_z = NAN;
+      }
+      // docs/judging.md §6: with R replicas z is Student's t with R − 1 degrees of freedom; below 8 a |z| = 4 bound is
+      // exceeded by chance in 3% of points and more, and a single replica has no error bar at all.
+      if (o.replicas == 1)
+        o.warnings.push_back("1 replica: no error bar, no z: every compared quantity is not judged (and does not pass); "
+                             "z needs >= " + std::to_string(replicas_for_z) + " replicas to mean anything (docs/judging.md §6)");
+      else if (o.replicas < replicas_for_z)
+        o.warnings.push_back(std::to_string(o.replicas) + " replicas: z needs >= " + std::to_string(replicas_for_z) +
+                             " replicas to mean anything (docs/judging.md §6); the verdicts below are weak");
       Provenance pd = p;
       pd.seed = std::to_string(seed), pd.fidelity = fidelity;
       write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), th.table.columns.front(), d));
