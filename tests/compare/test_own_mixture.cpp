@@ -195,6 +195,18 @@ TEST_CASE("own mixture: why is optional outside compare/scenes, generated when a
   CHECK(rep["quantities"]["T"]["why"].get<std::string>() == "no why given in the scene: model error relative = 0.05, z = 4");
 }
 
+TEST_CASE("own mixture: why stays required in compare/scenes/ - exit 2 naming the key", "[compare]") {
+  const auto d = test::fresh_dir("paper-why");
+  std::filesystem::create_directories(d / "compare" / "scenes");
+  const auto scene = d / "compare" / "scenes" / "s.toml";
+  test::write_file(scene, own_small + "[compare]\nquantities = [{ name = \"T\", relative = 0.05, z = 4 }]\n");
+  const auto r = test::run_granmix("compare " + scene.string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code == 2);
+  CHECK(own_has(r.output, "s.toml:18: compare.quantities[1].why: missing (allowed: a string)"));
+  CHECK(!std::filesystem::exists(d / "out" / "own"));
+}
+
 TEST_CASE("honest statistics: fewer than 8 replicas warn in the output and in report.json", "[compare][dsmc]") {
   const auto x = own_run("few-replicas", "compare", own_replace(own_small, "replicas = 8", "replicas = 4"));
   INFO(x.r.output);
