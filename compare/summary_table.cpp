@@ -48,7 +48,8 @@ void write_summary(const std::filesystem::path& out, const std::vector<SceneOutc
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
                                     {"theory_error", o.theory_error}, {"dsmc_seconds", o.dsmc_seconds},
-                                    {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()}};
+                                    {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()},
+                                    {"warnings", o.warnings}};
     if (o.quantities.empty())
       tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\t0\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
                          o.dsmc_seconds, o.collisions_per_second);

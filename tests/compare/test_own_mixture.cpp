@@ -220,6 +220,20 @@ TEST_CASE("honest statistics: fewer than 8 replicas warn in the output and in re
   CHECK(rep8["warnings"].empty());
 }
 
+TEST_CASE("honest statistics: validate's summary.json carries each scene's warnings", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("validate-warnings");
+  std::filesystem::create_directories(d / "scenes");
+  test::write_file(d / "scenes" / "own.toml", own_replace(own_small, "replicas = 8", "replicas = 4"));
+  const auto r = test::run_granmix("validate --scenes " + (d / "scenes").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code <= 1);
+  CHECK(own_has(r.output, "warning: 4 replicas: z needs >= 8 replicas"));
+  const auto summary = nlohmann::json::parse(std::ifstream(d / "out" / "summary.json"));
+  REQUIRE(summary["scenes"].size() == 1);
+  REQUIRE(summary["scenes"][0]["warnings"].size() == 1);
+  CHECK(own_has(summary["scenes"][0]["warnings"][0].get<std::string>(), "z needs >= 8 replicas"));
+}
+
 TEST_CASE("honest statistics: one replica - errors nan, not judged, never a pass with z = inf", "[compare][dsmc]") {
   const auto x = own_run("one-replica", "compare", own_replace(own_small, "replicas = 8", "replicas = 1"));
   INFO(x.r.output);
