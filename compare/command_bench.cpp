@@ -101,7 +101,7 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_flag("--json", o->json, "one JSON object per measured case on stdout");
   cmd->add_option("--repeats", o->repeats, "runs per case; the median is reported")->check(CLI::Range(1, 100));
   cmd->add_flag("--quick", o->quick, "small systems: a smoke run (tests, CI)");
-  cmd->add_option("--seed", o->seed, "master seed");
+  cmd->add_option("--seed", o->seed, "master seed")->check(seed_range());
   return [o]() { return run(*o); };
 }
 

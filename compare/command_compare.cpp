@@ -31,7 +31,7 @@ struct RunOptions {
 void add_run_options(CLI::App* cmd, RunOptions& o) {
   cmd->add_option("--out", o.out, "output folder")->capture_default_str();
   cmd->add_option("--fidelity", o.fidelity, "quick or paper")->check(CLI::IsMember({"quick", "paper"}))->capture_default_str();
-  cmd->add_option("--seed", o.seed, "master seed")->capture_default_str();
+  cmd->add_option("--seed", o.seed, "master seed")->check(seed_range())->capture_default_str();
   cmd->add_option("--threads", o.threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   add_checkpoint_flags(cmd, o.checkpoint);
 }
@@ -60,6 +60,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const model::Scene s = theory::load_scene(*scene);
+    require_dsmc_for_compare(s);
     std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, run_options(*o));
     o->checkpointing = start_checkpointing(o->checkpoint, plan);
     const scheduler::GatheredReplicas replicas = scheduler::run_units(plan, o->threads);
@@ -99,6 +100,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     for (const auto& f : files) {
       try {
         model::Scene s = theory::load_scene(f.string());
+        require_dsmc_for_compare(s);
         for (auto& d : dsmc::plan_scene_dsmc(s, run_options(*o))) setups.push_back(std::move(d));
         scenes.push_back(std::move(s));
       } catch (const std::exception& e) {

@@ -14,6 +14,7 @@
 #include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
+#include "scene_folder.hpp"
 #include "scheduler.hpp"
 #include "model/sha256.hpp"
 #include "tsv_writer.hpp"
@@ -48,6 +49,9 @@ int run(const DsmcOptions& o) {
   p.seed = std::to_string(o.seed) + " (replica r uses stream (seed, r))";
   p.fidelity = o.fidelity;
   const std::filesystem::path file = std::filesystem::path(o.out) / s.name / "dsmc.tsv";
+  std::vector<std::string> notes;
+  if (auto moved = set_aside_other_scene(o.out, s.name, p.scene_sha256)) notes.push_back(*moved);  // never beside another scene's tables
+  for (const std::string& n : dsmc::run_notes(s, o.fidelity)) notes.push_back(n);
   {
     interrupts::WriteGuard g;  // both files or neither
     write_atomically(file, format_tsv(provenance_header(p), run.table));
@@ -66,6 +70,8 @@ int run(const DsmcOptions& o) {
               r.seconds_loop, r.seconds_sample);
   std::printf("  acceptance %.3f, %.3g collisions/s per replica-second, wall %.2f s on %d rank(s) x %d thread(s), peak memory %.1f MB\n",
               r.acceptance(), r.collisions_per_second(), replicas.wall_seconds, replicas.ranks, replicas.threads, ru.ru_maxrss / 1024.0);
+  if (r.replicas == 1) notes.push_back("1 replica: the error columns are nan (no spread to estimate them from)");
+  for (const std::string& n : notes) std::printf("warning: %s\n", n.c_str());
   return 0;
 }
 
@@ -79,7 +85,7 @@ std::function<int()> add_dsmc_command(CLI::App& app) {
   cmd->add_option("--fidelity", o->fidelity, "quick or paper (particles, replicas of the scene's [dsmc])")
       ->check(CLI::IsMember({"quick", "paper"}))
       ->capture_default_str();
-  cmd->add_option("--seed", o->seed, "master seed")->capture_default_str();
+  cmd->add_option("--seed", o->seed, "master seed")->check(seed_range())->capture_default_str();
   cmd->add_option("--threads", o->threads, "threads (0: all cores)")->check(CLI::Range(0, 4096))->capture_default_str();
   add_checkpoint_flags(cmd, o->checkpoint);
   return [o]() { return run(*o); };

@@ -9,6 +9,7 @@
 #include "interrupts.hpp"
 #include "model/scene.hpp"
 #include "provenance.hpp"
+#include "scene_folder.hpp"
 #include "model/sha256.hpp"
 #include "model/errors.hpp"
 #include "theory/scene_theory.hpp"
@@ -38,7 +39,9 @@ std::function<int()> add_theory_command(CLI::App& app) {
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
     const std::filesystem::path file = std::filesystem::path(*out) / s.name / (level->empty() ? "theory.tsv" : "theory_" + *level + ".tsv");
+    const auto moved = set_aside_other_scene(*out, s.name, p.scene_sha256);  // never beside another scene file's tables
     write_atomically(file, format_tsv(provenance_header(p), r.table));
+    if (moved) std::printf("warning: %s\n", moved->c_str());
     std::printf("%s: %zu rows -> %s  (%.3f s; CVODE %ld steps, %ld RHS evaluations, %ld linear iterations)\n",
                 s.name.c_str(), r.table.rows.size(), file.c_str(), r.seconds, r.stats.steps, r.stats.rhs_evals, r.stats.linear_iterations);
     return 0;

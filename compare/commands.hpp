@@ -13,6 +13,10 @@ namespace granmix::compare {
 const std::string& command_line();
 void set_command_line(int argc, char** argv);
 
+// --seed: an integer in [0, 2^53] (JSON numbers hold it exactly); anything else is refused by CLI11 (exit 2).
+inline constexpr unsigned long long max_seed = 1ULL << 53;
+CLI::Validator seed_range();
+
 // compare/scenes of the working folder if there is one, else of the source tree.
 std::filesystem::path default_scene_folder();
 

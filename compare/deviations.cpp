@@ -77,10 +77,17 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, model::judges(q, t), true};
       const double diff = d.dsmc - d.theory;
       d.rel = d.theory != 0.0 ? diff / std::abs(d.theory) : 0.0;
-      d.z = d.dsmc_err > 0.0 ? diff / d.dsmc_err : (diff == 0.0 ? 0.0 : INFINITY);
+      // The error bar used for z, floored at rounding level: replicas that agree to the last digits do not make
+      // a rounding difference 10¹⁰ standard errors. An unknown error (NaN: one replica) gives no z and no verdict.
+      const double err = std::max(d.dsmc_err, error_floor * std::max(std::abs(d.dsmc), std::abs(d.theory)));
       d.model_error = model_error.at(row);
       d.resolved = d.model_error <= q.model_error_max;
-      d.pass = d.resolved && (std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * d.dsmc_err || std::abs(diff) <= q.absolute);
+      if (std::isnan(d.dsmc_err)) {
+        d.z = NAN, d.judged = false, d.pass = false;
+      } else {
+        d.z = err > 0.0 ? diff / err : (diff == 0.0 ? 0.0 : INFINITY);
+        d.pass = d.resolved && (std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * err || std::abs(diff) <= q.absolute);
+      }
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;
       out.push_back(d);
     }
@@ -95,6 +102,7 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
     for (const auto& x : d) {
       if (x.quantity != label(q)) continue;
       ++r.points;
+      if (std::isnan(x.dsmc_err)) r.not_judged = "no DSMC error bar (1 replica)";
       if (!x.judged) continue;
       ++r.judged;
       if (!x.pass) ++r.failed;

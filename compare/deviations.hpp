@@ -14,6 +14,12 @@
 
 namespace granmix::compare {
 
+// The DSMC error bar used for z and the verdict is at least this fraction of |dsmc| (or |theory|): rounding level.
+inline constexpr double error_floor = 1e-12;
+
+// z needs this many replicas to mean anything (docs/judging.md §6): fewer, and the comparison says so.
+inline constexpr std::size_t replicas_for_z = 8;
+
 struct Deviation {
   double t;  // the location: t, or the swept value, or v*
   int species;
@@ -32,6 +38,7 @@ struct QuantityResult {
   double max_rel = 0.0, max_z = 0.0;  // over judged points (|rel|, |z|)
   double max_paper_rel = NAN;         // the paper level's largest |rel| over the same points (NaN: none)
   double max_model_error = 0.0;       // largest relative tolerance applied (relative + correction)
+  std::string not_judged;             // why no point was judged (no error bar: 1 replica); empty when judged
   bool pass() const { return failed == 0 && judged > 0; }
 };
 

@@ -14,6 +14,8 @@
 #include "theory/grid/galerkin_decay.hpp"
 #include "theory/scene_theory.hpp"
 #include "interrupts.hpp"
+#include "model/errors.hpp"
+#include "scene_folder.hpp"
 #include "tsv_writer.hpp"
 
 namespace granmix::compare {
@@ -57,7 +59,18 @@ SceneEvaluation evaluate_scene(const model::Scene& s, const dsmc::RunOptions& op
   if (o.compared) {
     e.deviations = deviations(e.theory.table, e.dsmc.table, s.compare);
     o.quantities = summarise(e.deviations, s.compare);
-    for (const auto& q : o.quantities) o.pass = o.pass && q.pass();
+    for (auto& q : o.quantities) {
+      o.pass = o.pass && q.pass();
+      if (!q.not_judged.empty()) q.max_z = NAN;
+    }
+    // docs/judging.md §6: with R replicas z is Student's t with R − 1 degrees of freedom; below 8 a |z| = 4 bound is
+    // exceeded by chance in 3% of points and more, and a single replica has no error bar at all.
+    if (o.replicas == 1)
+      o.warnings.push_back("1 replica: no error bar, no z: every compared quantity is not judged (and does not pass); "
+                           "z needs >= " + std::to_string(replicas_for_z) + " replicas to mean anything (docs/judging.md §6)");
+    else if (o.replicas < replicas_for_z)
+      o.warnings.push_back(std::to_string(o.replicas) + " replicas: z needs >= " + std::to_string(replicas_for_z) +
+                           " replicas to mean anything (docs/judging.md §6); the verdicts below are weak");
   }
   return e;
 }
@@ -79,6 +92,7 @@ nlohmann::ordered_json report_json(const model::Scene& s, const SceneOutcome& o,
                                     {"failed", q.failed},
                                     {"unresolved", q.unresolved},
                                     {"why", q.spec.why}};
+    if (!q.not_judged.empty()) j["quantities"][label(q.spec)]["not_judged"] = q.not_judged;
     if (std::isfinite(q.max_paper_rel)) j["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
   }
   j["theory_seconds"] = o.theory_seconds;
@@ -92,13 +106,24 @@ nlohmann::ordered_json report_json(const model::Scene& s, const SceneOutcome& o,
   j["seed"] = seed;
   j["fidelity"] = fidelity;
   j["figure"] = o.figure;
+  j["warnings"] = o.warnings;
   return j;
+}
+
+void require_dsmc_for_compare(const model::Scene& s) {
+  if (!s.compare.empty() && !s.dsmc.present)
+    throw InputError(s.file + ": compare: judging needs a [dsmc] table (allowed: [dsmc] with quick = { particles = N, replicas = R })");
 }
 
 SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& out, const dsmc::RunOptions& opt) {
   const std::string& fidelity = opt.fidelity;
   const std::uint64_t seed = opt.seed;
   SceneOutcome o;
+  require_dsmc_for_compare(s);
+  // theory.tsv and dsmc.tsv of one scene file only: a folder of another's outputs is moved aside first.
+  std::vector<std::string> before;
+  if (auto moved = set_aside_other_scene(out, s.name, model::sha256_hex(s.text))) before.push_back(*moved);
+  for (const std::string& n : dsmc::run_notes(s, fidelity)) before.push_back(n);
   const std::filesystem::path tmp = out / ("." + s.name + ".tmp-" + std::to_string(getpid()));
   {
     interrupts::WriteGuard g;  // an interrupt removes the staging folder, never leaves it half made
@@ -110,6 +135,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
   try {
     const SceneEvaluation e = evaluate_scene(s, opt);
     o = e.outcome;
+    o.warnings.insert(o.warnings.begin(), before.begin(), before.end());
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
     write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), e.theory.table));

@@ -25,6 +25,9 @@ struct SceneOutcome {
   double collisions = 0.0, collisions_per_second = 0.0, acceptance = 0.0;
   std::size_t particles = 0, replicas = 0;
   std::string figure;
+  // What the reader of the verdict must know: too few replicas for z, a particle total the split does not hit,
+  // the quick settings standing in for paper, old outputs moved aside (report.json "warnings").
+  std::vector<std::string> warnings;
 };
 
 // What compare_scene computes, before anything is written: the theory (and its error estimate), the DSMC (when the
@@ -40,6 +43,8 @@ SceneEvaluation evaluate_scene(const model::Scene& scene, const dsmc::RunOptions
 
 // report.json of a scene (docs/architecture.md §4).
 nlohmann::ordered_json report_json(const model::Scene& scene, const SceneOutcome& outcome, std::uint64_t seed, const std::string& fidelity);
+// [compare] needs DSMC: refused (exit 2) by the commands that judge; `theory` reads such a scene without [dsmc].
+void require_dsmc_for_compare(const model::Scene& scene);
 
 // run: fidelity, seed, threads and, under MPI or with checkpoints, where replicas come from.
 SceneOutcome compare_scene(const model::Scene& scene, const std::filesystem::path& out, const dsmc::RunOptions& run);

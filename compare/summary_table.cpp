@@ -19,9 +19,12 @@ std::string summary_lines(const SceneOutcome& o) {
   const std::string theory = fmt::format("{:.3f} ({:.0e})", o.theory_seconds, o.theory_error);
   const std::string cps = o.collisions_per_second > 0 ? fmt::format("{:.3g}", o.collisions_per_second) : "-";
   const std::string dsmc = o.dsmc_seconds > 0 ? fmt::format("{:.2f}", o.dsmc_seconds) : "-";
-  if (o.quantities.empty())
-    return fmt::format("{:<24} {:<18} {:>9} {:>8} {:>20} {:<5} {:>9} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only",
-                       o.pass ? "yes" : "NO", "-", theory, dsmc, cps);
+  if (o.quantities.empty()) {
+    std::string s = fmt::format("{:<24} {:<18} {:>9} {:>8} {:>20} {:<5} {:>9} {:>18} {:>9} {:>12}\n", o.scene, "-", "-", "-", "theory only",
+                                o.pass ? "yes" : "NO", "-", theory, dsmc, cps);
+    for (const auto& w : o.warnings) s += fmt::format("{:<24} warning: {}\n", "", w);
+    return s;
+  }
   std::string s;
   for (const auto& q : o.quantities)
     s += fmt::format("{:<24} {:<18} {:>9.4f} {:>8.2f} {:>20} {:<5} {:>9.4f} {:>18} {:>9} {:>12}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
@@ -30,6 +33,9 @@ std::string summary_lines(const SceneOutcome& o) {
     if (q.unresolved > 0)  // failed whatever DSMC says: the theory's own bound is wider than the level resolves
       s += fmt::format("{:<24} {}: {} of {} judged points unresolved: model error up to {:.4g}, above model_error_max = {:g}\n", "", label(q.spec),
                        q.unresolved, q.judged, q.max_model_error, q.spec.model_error_max);
+  for (const auto& q : o.quantities)
+    if (!q.not_judged.empty()) s += fmt::format("{:<24} {}: not judged: {}\n", "", label(q.spec), q.not_judged);
+  for (const auto& w : o.warnings) s += fmt::format("{:<24} warning: {}\n", "", w);
   return s;
 }
 
@@ -42,7 +48,8 @@ void write_summary(const std::filesystem::path& out, const std::vector<SceneOutc
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
                                     {"theory_error", o.theory_error}, {"dsmc_seconds", o.dsmc_seconds},
-                                    {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()}};
+                                    {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()},
+                                    {"warnings", o.warnings}};
     if (o.quantities.empty())
       tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\t0\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
                          o.dsmc_seconds, o.collisions_per_second);

@@ -1,6 +1,8 @@
 #include "scene_dsmc.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 #include "distribution_table.hpp"
@@ -227,7 +229,50 @@ DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
   return d;
 }
 
+namespace {
+// One replica has no spread: its error columns are NaN ("unknown"), never 0, so that nothing downstream reads an
+// exact result into a single run.
+void unknown_errors_of_one_replica(model::Table& t) {
+  for (std::size_t c = 0; c < t.columns.size(); ++c)
+    if (t.columns[c].size() > 4 && t.columns[c].compare(t.columns[c].size() - 4, 4, "_err") == 0)
+      for (auto& row : t.rows) row[c] = std::numeric_limits<double>::quiet_NaN();
+}
+}  // namespace
+
 DsmcRun run_scene_dsmc(const model::Scene& s, const RunOptions& opt) {
+  DsmcRun run = run_scene_dsmc_tables(s, opt);
+  if (run.result.replicas == 1) {
+    unknown_errors_of_one_replica(run.table);
+    unknown_errors_of_one_replica(run.distribution);
+  }
+  return run;
+}
+
+std::vector<std::string> run_notes(const model::Scene& s, const std::string& fidelity) {
+  std::vector<std::string> notes;
+  if (!s.dsmc.present) return notes;
+  const model::DsmcFidelity f = fidelity == "paper" ? s.dsmc.paper : s.dsmc.quick;
+  if (fidelity == "paper" && !s.dsmc.paper_given)
+    notes.push_back("[dsmc] has no paper table: --fidelity paper runs the quick settings (" + std::to_string(f.particles) +
+                    " particles x " + std::to_string(f.replicas) + " replicas)");
+  // The split by density rounds each species' count; the shipped scenes keep that split (their results stay
+  // reproducible), so a total it misses is stated, not silently changed.
+  std::vector<model::Mixture> mixtures{s.mixture};
+  if (s.theory.sweep)
+    for (double x : s.dsmc.at) mixtures.push_back(model::sweep_point(s, x).mixture);
+  std::vector<std::size_t> totals;
+  for (const model::Mixture& m : mixtures) {
+    std::size_t n = 0;
+    for (std::size_t c : counts_for(m, f.particles)) n += c;
+    if (n != f.particles && std::find(totals.begin(), totals.end(), n) == totals.end()) totals.push_back(n);
+  }
+  for (std::size_t n : totals)
+    notes.push_back("dsmc." + fidelity + ".particles = " + std::to_string(f.particles) + " split over the species by density (each count rounded) gives " +
+                    std::to_string(n) + " particles; the run uses " + std::to_string(n));
+  return notes;
+}
+
+DsmcRun run_scene_dsmc_tables(const model::Scene& s, const RunOptions& opt) {
   if (!s.dsmc.present) throw InputError(s.file + ": scene has no [dsmc] table: nothing to simulate");
   if (s.theory.sweep) return run_sweep_dsmc(s, opt);
   DsmcRun run;

@@ -32,7 +32,14 @@ struct RunOptions {
   const StopRequest* stop = nullptr;
 };
 
+// With one replica every error column is NaN: one run has no spread.
 DsmcRun run_scene_dsmc(const model::Scene& scene, const RunOptions& options);
+// The same before that rule (the tables as the ensemble reduces them).
+DsmcRun run_scene_dsmc_tables(const model::Scene& scene, const RunOptions& options);
+
+// What a run at this fidelity does that the scene's numbers do not say: the quick settings standing in for a missing
+// [dsmc] paper table; a particle total the split by density does not hit exactly (the count the run uses).
+std::vector<std::string> run_notes(const model::Scene& scene, const std::string& fidelity);
 
 // Sweep scenes: one settled-state run per value in dsmc.at; rows (x, species) with D_ratio, gamma,
 // c and their errors, in the long form of the theory sweep table.

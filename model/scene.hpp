@@ -69,6 +69,7 @@ struct DsmcSettings {
   // γ and c at the last, D_k/D_1 from MSD increments between the first and the last).
   std::vector<double> at;
   DsmcFidelity quick, paper;
+  bool paper_given = true;  // false: no [dsmc] paper table; --fidelity paper runs the quick settings (and says so)
 };
 
 // [compare]: which quantities are compared and with what tolerance (docs/architecture.md §3–4). A point passes
@@ -124,6 +125,7 @@ struct Scene {
   TheorySettings theory;
   DsmcSettings dsmc;
   std::vector<CompareQuantity> compare;
+  bool compare_generated = false;  // no [compare] but [dsmc]: compare holds the default comparison
   PlotSettings plot;
 };
 
@@ -132,6 +134,11 @@ struct Scene {
 Scene load_scene(const std::string& path, const LevelRules& levels);
 // The same from the file's text; `path` only names it in messages (and Scene::file). Fuzzed in tests/fuzz.
 Scene load_scene_text(const std::string& text, const std::string& path, const LevelRules& levels);
+
+// A scene with [dsmc] and without [compare] is judged by default (docs/judging.md, "The default comparison"): every
+// quantity it asks for that DSMC measures, z = 4, model error from every companion its level has for that quantity in
+// this scene (fixed relative 0.05 where there is none), a generated `why` saying so.
+std::vector<CompareQuantity> default_comparison(const Scene& scene, const LevelRules& levels);
 
 // The scene at one value x of its sweep (mixture, restitution, Enskog as the parameter says), sweep removed.
 Scene sweep_point(const Scene& scene, double x);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <vector>
 
 #include "errors.hpp"
 
@@ -27,6 +28,34 @@ std::string type_name(const toml::node& n) {
 TomlFields::TomlFields(const toml::table& table, std::string file, std::string path)
     : table_(table), file_(std::move(file)), path_(std::move(path)) {}
 
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diag = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diag = up;
+    }
+  }
+  return row[b.size()];
+}
+
+std::string TomlFields::typo_hint(const std::string& key) const {
+  if (table_.contains(key)) return "";
+  std::string best;
+  std::size_t dist = 3;  // a typo: at most two edits away
+  for (const auto& [k, v] : table_) {
+    const std::string name(k.str());
+    if (used_.count(name) || asked_.count(name)) continue;  // a key the table knows is not a typo
+    const std::size_t d = edit_distance(name, key);
+    if (d < dist) dist = d, best = name;
+  }
+  return best.empty() ? "" : "; found unknown key \"" + best + "\": did you mean \"" + key + "\"?";
+}
+
 void TomlFields::fail_at(const toml::node& at, const std::string& key, const std::string& what,
                          const std::string& allowed) const {
   const auto line = at.source().begin.line;
@@ -37,7 +66,7 @@ void TomlFields::fail_at(const toml::node& at, const std::string& key, const std
 
 void TomlFields::fail(const std::string& key, const std::string& what, const std::string& allowed) const {
   const toml::node* n = table_.get(key);
-  fail_at(n ? *n : static_cast<const toml::node&>(table_), key, what, allowed);
+  fail_at(n ? *n : static_cast<const toml::node&>(table_), key, what + typo_hint(key), allowed);
 }
 
 const toml::node* TomlFields::node(const std::string& key) {
@@ -71,7 +100,14 @@ std::size_t TomlFields::count(const std::string& key, std::size_t lo, std::size_
     if (fallback) return *fallback;
     fail(key, "missing", range);
   }
-  if (!n->is_integer()) fail(key, "expected an integer", range);
+  if (n->is_floating_point()) {  // 2e4 is a count; 2.5 is not
+    const double d = n->value<double>().value();
+    if (!std::isfinite(d) || d != std::floor(d))
+      fail(key, "expected an integer, found " + format_number(d) + " (not a whole number)", range);
+    if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) fail(key, "value " + format_number(d) + " out of range", range);
+    return static_cast<std::size_t>(d);
+  }
+  if (!n->is_integer()) fail(key, "expected an integer, found " + type_name(*n), range);
   const auto v = n->value<std::int64_t>().value();
   if (v < static_cast<std::int64_t>(lo) || v > static_cast<std::int64_t>(hi))
     fail(key, "value " + std::to_string(v) + " out of range", range);
@@ -153,10 +189,19 @@ TomlFields TomlFields::sub(const std::string& key) {
 }
 
 void TomlFields::finish() const {
+  std::set<std::string> known = used_;
+  known.insert(asked_.begin(), asked_.end());
   std::string allowed;
-  for (const auto& a : used_) allowed += (allowed.empty() ? "" : ", ") + a;
-  for (const auto& [k, v] : table_)
-    if (!used_.count(std::string(k.str()))) fail_at(v, std::string(k.str()), "unknown key", allowed);
+  for (const auto& a : known) allowed += (allowed.empty() ? "" : ", ") + a;
+  for (const auto& [k, v] : table_) {
+    const std::string name(k.str());
+    if (used_.count(name)) continue;
+    std::string near;
+    std::size_t dist = 3;  // a typo: at most two edits away
+    for (const auto& a : known)
+      if (const std::size_t d = edit_distance(name, a); a != name && d < dist) dist = d, near = a;
+    fail_at(v, name, near.empty() ? "unknown key" : "unknown key; did you mean \"" + near + "\"?", allowed);
+  }
 }
 
 }  // namespace granmix::model
