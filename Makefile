@@ -35,8 +35,9 @@ test: build
 # The Python module (docs/python.md) where the system's python3 finds it; without the rights to write there, a note.
 install: build
 	@if [ -d $(BUILD)/python/granmix ]; then \
-	  cmake --install $(BUILD) > /dev/null 2>&1 && echo "install: the Python module granmix is installed (python3 -c 'import granmix'; docs/python.md)" || \
-	  echo "install: the Python module is in $(BUILD)/python (PYTHONPATH=$(BUILD)/python); cmake --install $(BUILD) as root installs it"; \
+	  if cmake --install $(BUILD) > /dev/null 2>&1; then \
+	    echo "install: the Python module granmix is installed (python3 -c 'import granmix'; docs/python.md)"; scripts/python-path.sh $(BUILD); \
+	  else echo "install: the Python module is in $(BUILD)/python (PYTHONPATH=$(BUILD)/python); cmake --install $(BUILD) as root installs it"; fi; \
 	else echo "install: no Python module was built (python3-dev, pybind11-dev: scripts/install-deps.sh)"; fi
 
 validate: build
