@@ -77,11 +77,15 @@ py::dict to_python(const model::Table& t) {
 
 std::string fspath(const py::object& path) { return py::str(py::module_::import("os").attr("fspath")(path)); }
 
-void check_run_options(const std::string& fidelity, int threads) {
+// The run options of granmix.dsmc and granmix.compare, checked as the command line checks its flags.
+dsmc::RunOptions run_options(const std::string& fidelity, std::uint64_t seed, int threads) {
   if (fidelity != "quick" && fidelity != "paper")
     throw InputError("fidelity: \"" + fidelity + "\" is not a fidelity (allowed: quick, paper)");
   if (threads < 0 || threads > 4096)
     throw InputError("threads: " + std::to_string(threads) + " (allowed: 0 for all cores, or 1 to 4096)");
+  dsmc::RunOptions opt;
+  opt.fidelity = fidelity, opt.seed = seed, opt.threads = threads;
+  return opt;
 }
 
 // Runs DSMC work with the GIL released, on a thread of its own; a signal whose Python handler raises (SIGINT:
@@ -248,9 +252,7 @@ arguments out of range (the message names the command line's flag).)");
   m.def(
       "_dsmc",
       [](const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads) {
-        check_run_options(fidelity, threads);
-        dsmc::RunOptions opt;
-        opt.fidelity = fidelity, opt.seed = seed, opt.threads = threads;
+        dsmc::RunOptions opt = run_options(fidelity, seed, threads);
         dsmc::DsmcRun run;
         run_interruptibly([&](const dsmc::StopRequest& stop) {
           opt.stop = &stop;
@@ -266,9 +268,7 @@ arguments out of range (the message names the command line's flag).)");
   m.def(
       "_compare",
       [](const model::Scene& s, const std::string& fidelity, std::uint64_t seed, int threads) {
-        check_run_options(fidelity, threads);
-        dsmc::RunOptions opt;
-        opt.fidelity = fidelity, opt.seed = seed, opt.threads = threads;
+        dsmc::RunOptions opt = run_options(fidelity, seed, threads);
         compare::SceneEvaluation e;
         run_interruptibly([&](const dsmc::StopRequest& stop) {
           opt.stop = &stop;

@@ -418,9 +418,11 @@ TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairT
   // The companions a model error is measured from, in the catalogue's order of corrections.
   for (const CorrectionMeaning& correction : catalogue.corrections()) {
     const LevelCompanion* c = judged.companion(correction.name);
-    if (c == nullptr || !corrected_from(s, correction.name) || catalogue.find(c->level).reported_beside_others) continue;
+    if (c == nullptr || !corrected_from(s, correction.name)) continue;
+    const LevelDescriptor& companion = catalogue.find(c->level);
+    if (companion.reported_beside_others) continue;  // its columns are there already
     SolverStats companion_stats;
-    append_level_columns(r.table, level_table(s, *catalogue.find(c->level).make(), companion_stats, tables), correction.name);
+    append_level_columns(r.table, level_table(s, *companion.make(), companion_stats, tables), correction.name);
   }
   if (unit != 1.0) rescale_time_columns(r.table, 1.0 / unit);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -84,6 +84,7 @@ class ConvergedLevel final : public TheoryLevel {
     // tracer problem's basis of `basis` functions.
     bool a2_only = false;
     std::size_t basis = converged_diffusion_basis;
+    bool operator==(const Variant&) const = default;
   };
   explicit ConvergedLevel(Variant v) : base_(kinetic_sonine_order, v.cooling_order), v_(v) {}
   // kinetic-converged-hcs: its sweep points' increments too in closed form, from the settled memory at the converged HCS
@@ -302,11 +303,6 @@ class ConvergedLevel final : public TheoryLevel {
 
 using Variant = ConvergedLevel::Variant;
 
-bool same(const Variant& a, const Variant& b) {
-  return a.cooling_order == b.cooling_order && a.reshaped == b.reshaped && a.hcs_converged == b.hcs_converged && a.grid == b.grid &&
-         a.a2_only == b.a2_only && a.basis == b.basis;
-}
-
 // A part changed: the companion of a variant within the family (nullopt where that part does not change).
 struct ConvergedCompanion {
   const char* correction;
@@ -369,7 +365,8 @@ void declare_converged_levels(LevelCatalogue& c) {
                 : v.hcs_converged ? "sweeps at constant restitution, up to 100 species"
                                   : "any restitution law in time (constant in sweeps), up to 100 species";
     d.cost = v.grid ? "seconds (v1 Fig. 2: ~1 s)" : v.hcs_converged ? "~0.1-0.5 s per sweep point" : "~0.1-1 s per history, more for many species";
-    d.scene_may_choose = same(v, {}) || same(v, {.cooling_order = 3}) || same(v, {.hcs_converged = true}) || same(v, {.cooling_order = 3, .grid = true});
+    d.scene_may_choose = v == Variant{} || v == Variant{.cooling_order = 3} || v == Variant{.hcs_converged = true} ||
+                         v == Variant{.cooling_order = 3, .grid = true};
     if (v.hcs_converged)
       d.conditions.push_back({.needs_sweep = true,
                               .what = "level \"" + d.name + "\" is the settled state of a sweep (the converged HCS has no history in time)",
@@ -390,8 +387,7 @@ void declare_converged_levels(LevelCatalogue& c) {
     if (plain(v) && v.cooling_order == 3 && !v.reshaped && v.basis == converged_diffusion_basis)
       d.companions.push_back({"sonine4", KineticLevel::level_name(kinetic_sonine_order, 3, false), "D at Sonine order 4 instead of the converged tracer problem", {}});
     for (const ConvergedCompanion& k : companions)
-      if (const std::optional<Variant> w = k.change(v);
-          w && std::any_of(variants.begin(), variants.end(), [&](const Variant& x) { return same(x, *w); }))
+      if (const std::optional<Variant> w = k.change(v); w && std::find(variants.begin(), variants.end(), *w) != variants.end())
         d.companions.push_back({k.correction, ConvergedLevel::level_name(*w), k.changes, k.quantities, k.needs_tracer, false, k.needs_history_with_constant_restitution});
     d.construct = [v] { return std::make_unique<ConvergedLevel>(v); };
     c.add(std::move(d));
