@@ -14,6 +14,7 @@
 #include "scene_compare.hpp"
 #include "scheduler.hpp"
 #include "summary_table.hpp"
+#include "theory/level_choice.hpp"
 #include "theory/scene_theory.hpp"
 
 namespace granmix::compare {
@@ -54,12 +55,13 @@ std::function<int()> add_compare_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("compare", "theory and DSMC of a scene, deviations, report.json and the figure");
   auto o = std::make_shared<RunOptions>();
   auto scene = std::make_shared<std::string>();
-  cmd->add_option("scene", *scene, "scene file (TOML)")->required();
+  cmd->add_option("scene", *scene, "scene file (TOML); - reads it from standard input")->required();
   add_run_options(cmd, *o);
   return [o, scene]() {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
-    const model::Scene s = theory::load_scene(*scene);
+    const model::Scene s = theory::with_level_chosen(theory::load_scene(*scene));
+    if (!s.theory.level_choice.empty() && scheduler::root()) std::printf("level: %s\n", s.theory.level_choice.c_str()), std::fflush(stdout);
     require_dsmc_for_compare(s);
     std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, run_options(*o));
     o->checkpointing = start_checkpointing(o->checkpoint, plan);
@@ -69,7 +71,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     run.source = &replicas;
     const SceneOutcome r = compare_scene(s, o->out, run);
     std::printf("%s%s", summary_header().c_str(), summary_lines(r).c_str());
-    std::printf("-> %s/%s/ (%s)\n", o->out.c_str(), s.name.c_str(), r.figure.c_str());
+    std::printf("-> %s/%s/ (index.html; %s)\n", o->out.c_str(), s.name.c_str(), r.figure.c_str());
     return r.pass ? 0 : 1;
   };
 }
@@ -99,7 +101,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
     };
     for (const auto& f : files) {
       try {
-        model::Scene s = theory::load_scene(f.string());
+        model::Scene s = theory::with_level_chosen(theory::load_scene(f.string()));
         require_dsmc_for_compare(s);
         for (auto& d : dsmc::plan_scene_dsmc(s, run_options(*o))) setups.push_back(std::move(d));
         scenes.push_back(std::move(s));

@@ -80,7 +80,7 @@ int run(const DsmcOptions& o) {
 std::function<int()> add_dsmc_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("dsmc", "event-driven DSMC of a scene -> DIR/<scene>/dsmc.tsv");
   auto o = std::make_shared<DsmcOptions>();
-  cmd->add_option("scene", o->scene, "scene file (TOML)")->required();
+  cmd->add_option("scene", o->scene, "scene file (TOML); - reads it from standard input")->required();
   cmd->add_option("--out", o->out, "output folder")->capture_default_str();
   cmd->add_option("--fidelity", o->fidelity, "quick or paper (particles, replicas of the scene's [dsmc])")
       ->check(CLI::IsMember({"quick", "paper"}))

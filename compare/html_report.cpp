@@ -27,9 +27,15 @@ table.summary th { background: #eee; } td.num { text-align: right; font-family: 
 .scene { display: flex; gap: 1.5em; align-items: flex-start; } .scene img { width: 620px; border: 1px solid #ccc; }
 .details { flex: 1; min-width: 360px; } .q { border-left: 4px solid #ccc; padding: 0.2em 0.8em; margin: 0.6em 0; }
 .q.ok { border-color: #4a4; } .q.bad { border-color: #c33; } .why { color: #444; } ul.kv { margin: 0.2em 0; padding-left: 1.4em; }
-.errors { background: #f8d0d0; padding: 0.5em 1em; } .source { font-style: italic; } .files a { margin-right: 1em; }
+.errors, .warning { background: #f8d0d0; padding: 0.5em 1em; } .source { font-style: italic; } .files a { margin-right: 1em; }
 </style>
 )";
+
+// The rule of compare/deviations.cpp: the parts add (docs/judging.md).
+const char* const rule_text =
+    "A judged point passes when |dsmc − theory| ≤ model error · |theory| + z · dsmc_err (or ≤ absolute), where the model error is "
+    "the quantity's relative part plus the largest |theory − companion|/|theory| of its correction_from companions plus the "
+    "level's own error column, and stays within model_error_max where one is set.";
 
 // A number as the summary table prints it: fixed decimals, or "-" when absent (theory-only scenes).
 std::string number(const ordered_json& j, const char* key, const char* format) {
@@ -81,9 +87,6 @@ std::string tolerance_cell(const ordered_json& t) {
 
 std::string verdict(bool pass) { return pass ? "<span class=\"verdict pass\">pass</span>" : "<span class=\"verdict fail\">FAIL</span>"; }
 
-// Relative link to a file of the scene folder (scene names are plain file names).
-std::string href(const std::string& scene, const std::string& file) { return html_escape(scene + "/" + file); }
-
 ordered_json read_json(const std::filesystem::path& p) {
   std::ifstream in(p);
   if (!in) throw std::runtime_error("html report: cannot read " + p.string());
@@ -127,20 +130,22 @@ std::string quantity_block(const std::string& label, const ordered_json& q) {
   return s + "</div>\n";
 }
 
-std::string scene_section(const std::filesystem::path& out, const ordered_json& sc) {
-  const std::string name = sc.value("scene", "");
-  const std::filesystem::path dir = out / name;
-  std::string s = "<h2 id=\"" + html_escape(name) + "\">" + html_escape(name) + " " + verdict(sc.value("pass", false)) + "</h2>\n";
+// A scene's section: its folder `dir`, the links to its files prefixed by `link` (the validation page links into the
+// scene folders; the scene's own page sits in its folder).
+std::string scene_section(const std::filesystem::path& dir, const std::string& name, bool pass, const std::string& link) {
+  const auto href = [&](const std::string& file) { return html_escape(link + file); };
+  std::string s = "<h2 id=\"" + html_escape(name) + "\">" + html_escape(name) + " " + verdict(pass) + "</h2>\n";
   if (!std::filesystem::exists(dir / "report.json")) return s + "<p>no report.json in " + html_escape(dir.string()) + "</p>\n";
   const ordered_json rep = read_json(dir / "report.json");
   if (rep.contains("title")) s += "<p><b>" + render(rep["title"]) + "</b></p>\n";
+  for (const auto& w : rep.value("warnings", ordered_json::array())) s += "<p class=\"warning\"><b>warning:</b> " + render(w) + "</p>\n";
   s += "<div class=\"scene\">\n";
   if (std::filesystem::exists(dir / (name + ".png")))
-    s += "<a href=\"" + href(name, name + ".png") + "\"><img src=\"" + href(name, name + ".png") + "\" alt=\"figure of " +
-         html_escape(name) + "\"></a>\n";
+    s += "<a href=\"" + href(name + ".png") + "\"><img src=\"" + href(name + ".png") + "\" alt=\"figure of " + html_escape(name) + "\"></a>\n";
   else
     s += "<p>no figure: " + render(rep.value("figure", ordered_json("not drawn"))) + "</p>\n";
   s += "<div class=\"details\">\n<p class=\"source\">Paper: " + render(rep.value("source", ordered_json("-"))) + "</p>\n";
+  if (rep.contains("level")) s += "<p>theory level " + render(rep["level"]) + (rep.contains("level_choice") ? ": " + render(rep["level_choice"]) : "") + "</p>\n";
   s += fmt::format("<p>fidelity {}, seed {}, {} particles × {} replicas, theory {} s, DSMC {} s</p>\n",
                    render(rep.value("fidelity", ordered_json("-"))), render(rep.value("seed", ordered_json("-"))),
                    render(rep.value("particles", ordered_json(0))), render(rep.value("replicas", ordered_json(0))),
@@ -150,7 +155,7 @@ std::string scene_section(const std::filesystem::path& out, const ordered_json& 
   s += "<p class=\"files\">";
   const std::vector<std::string> files{"theory.tsv", "dsmc.tsv", "distribution.tsv", "deviations.tsv", "report.json", name + ".pdf", name + ".gp"};
   for (const std::string& f : files)
-    if (std::filesystem::exists(dir / f)) s += "<a href=\"" + href(name, f) + "\">" + html_escape(f) + "</a>";
+    if (std::filesystem::exists(dir / f)) s += "<a href=\"" + href(f) + "\">" + html_escape(f) + "</a>";
   return s + "</p>\n</div>\n</div>\n";
 }
 
@@ -180,21 +185,35 @@ std::string html_report(const std::filesystem::path& out) {
   std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>granmix validate</title>\n";
   s += style;
   s += "</head>\n<body>\n<h1>granmix validate " + verdict(pass) + "</h1>\n";
-  s += fmt::format("<p>{} scenes, {} of {} compared quantities pass, {} scene errors; granmix {} (git {}), written {}. "
-                   "A point passes when |dsmc − theory| ≤ max(relative·|theory|, z·dsmc_err). "
+  s += fmt::format("<p>{} scenes, {} of {} compared quantities pass, {} scene errors; granmix {} (git {}), written {}. {} "
                    "<a href=\"summary.tsv\">summary.tsv</a> <a href=\"summary.json\">summary.json</a></p>\n",
                    summary["scenes"].size(), passed, quantities, summary.value("errors", ordered_json::array()).size(), granmix::version,
-                   granmix::git_sha, utc_now_iso8601());
+                   granmix::git_sha, utc_now_iso8601(), rule_text);
   if (!summary.value("errors", ordered_json::array()).empty()) {
     s += "<div class=\"errors\"><b>Scenes that did not run:</b><ul>";
     for (const auto& e : summary["errors"]) s += "<li>" + render(e) + "</li>";
     s += "</ul></div>\n";
   }
   s += summary_table(summary);
-  for (const auto& sc : summary["scenes"]) s += scene_section(out, sc);
+  for (const auto& sc : summary["scenes"]) {
+    const std::string name = sc.value("scene", "");
+    s += scene_section(out / name, name, sc.value("pass", false), name + "/");
+  }
   return s + "</body>\n</html>\n";
 }
 
 void write_html_report(const std::filesystem::path& out) { write_atomically(out / "index.html", html_report(out)); }
+
+std::string scene_html_report(const std::filesystem::path& dir) {
+  const ordered_json rep = read_json(dir / "report.json");
+  const std::string name = rep.value("scene", dir.filename().string());
+  std::string s = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>granmix compare " + html_escape(name) +
+                  "</title>\n" + style + "</head>\n<body>\n";
+  s += fmt::format("<p>granmix {} (git {}), written {}. {}</p>\n", granmix::version, granmix::git_sha, utc_now_iso8601(), rule_text);
+  s += scene_section(dir, name, rep.value("pass", false), "");
+  return s + "</body>\n</html>\n";
+}
+
+void write_scene_html_report(const std::filesystem::path& dir) { write_atomically(dir / "index.html", scene_html_report(dir)); }
 
 }  // namespace granmix::compare

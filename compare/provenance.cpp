@@ -23,6 +23,7 @@ std::string provenance_header(const Provenance& p) {
   h += "# fidelity: " + p.fidelity + "\n";
   h += "# date: " + utc_now_iso8601() + "\n";
   h += "# command: " + p.command + "\n";
+  if (!p.level_choice.empty()) h += "# level: " + p.level_choice + "\n";
   return h;
 }
 

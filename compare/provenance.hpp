@@ -10,6 +10,7 @@ struct Provenance {
   std::string seed = "none (theory is deterministic)";
   std::string fidelity = "n/a";
   std::string command;
+  std::string level_choice;  // level = "auto": the level chosen and why (a line only when set)
 };
 
 std::string provenance_header(const Provenance& p);

@@ -9,6 +9,7 @@
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
 #include "gnuplot_figure.hpp"
+#include "html_report.hpp"
 #include "provenance.hpp"
 #include "model/sha256.hpp"
 #include "theory/grid/galerkin_decay.hpp"
@@ -80,6 +81,8 @@ nlohmann::ordered_json report_json(const model::Scene& s, const SceneOutcome& o,
   j["scene"] = s.name;
   j["source"] = s.source;
   j["title"] = s.title;
+  j["level"] = s.theory.level;
+  if (!s.theory.level_choice.empty()) j["level_choice"] = s.theory.level_choice;
   j["pass"] = o.pass;
   j["quantities"] = nlohmann::ordered_json::object();
   for (const auto& q : o.quantities) {
@@ -138,6 +141,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     o.warnings.insert(o.warnings.begin(), before.begin(), before.end());
     Provenance p;
     p.scene_name = s.name, p.scene_file = s.file, p.scene_sha256 = model::sha256_hex(s.text), p.command = command_line();
+    p.level_choice = s.theory.level_choice;
     write_atomically(tmp / "theory.tsv", format_tsv(provenance_header(p), e.theory.table));
     if (s.dsmc.present) {
       Provenance pd = p;
@@ -153,6 +157,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
     interrupts::WriteGuard g;  // figure, report and rename: finished together or not at all
     o.figure = write_figure(tmp, s, e.theory.table, s.dsmc.present ? &e.dsmc.table : nullptr).message;
     write_atomically(tmp / "report.json", report_json(s, o, seed, fidelity).dump(2) + "\n");
+    write_scene_html_report(tmp);  // the scene's own page (index.html), from its report.json
     std::filesystem::remove_all(out / s.name);
     std::filesystem::rename(tmp, out / s.name);  // the scene folder appears complete or not at all
     interrupts::set_staging({});

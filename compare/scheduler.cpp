@@ -16,6 +16,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "dsmc/progress_counter.hpp"
 #include "dsmc/unit_cost.hpp"
 #include "model/errors.hpp"
 
@@ -179,18 +180,22 @@ Done run_unit(const std::vector<dsmc::DsmcSetup>& setups, const std::vector<Unit
   return d;
 }
 
-// One line on stderr, rewritten in place on a terminal, every 10% of the estimated work otherwise.
+// One line on stderr, rewritten in place at most once a second on a terminal, every 10% of the estimated work
+// otherwise. The work done counts the replicas in flight too (their collisions so far, dsmc/progress_counter.hpp), so a
+// run of one long replica moves before it ends; the time left scales the elapsed time by the estimated work left
+// (dsmc/unit_cost.hpp: the units' costs are expected collisions).
 class Progress {
  public:
   Progress(double total_cost, std::size_t units) : total_(total_cost), units_(units), tty_(isatty(STDERR_FILENO)) {}
   void update(std::size_t done, double done_cost, double collisions, double elapsed) {
-    const double f = total_ > 0 ? done_cost / total_ : 1.0;
+    const double running = std::max<double>(0.0, double(dsmc::in_flight_collisions().total()));
+    const double f = total_ > 0 ? std::min(1.0, (done_cost + running) / total_) : 1.0;
     if (!tty_ && f < next_ && done < units_) return;
     if (tty_ && elapsed - last_ < 1.0 && done < units_) return;
     last_ = elapsed, next_ = f + 0.1;
     const double left = f > 0 ? elapsed * (1.0 - f) / f : 0.0;
-    std::fprintf(stderr, "%sDSMC: %zu/%zu units, %.3g collisions/s, ~%.0f s left%s", tty_ ? "\r" : "", done, units_,
-                 elapsed > 0 ? collisions / elapsed : 0.0, left, tty_ ? "   " : "\n");
+    std::fprintf(stderr, "%sDSMC: %zu/%zu units, %.0f%% of the estimated collisions, %.3g collisions/s, ~%.0f s left%s", tty_ ? "\r" : "",
+                 done, units_, 100.0 * f, elapsed > 0 ? (collisions + running) / elapsed : 0.0, left, tty_ ? "   " : "\n");
     if (tty_ && done == units_) std::fprintf(stderr, "\n");
   }
 

@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "checkpoint_files.hpp"
+#include "progress_counter.hpp"
 #include "event_loop.hpp"
 #include "model/errors.hpp"
 #include "time_step_scheme.hpp"
@@ -226,14 +227,16 @@ ReplicaRecord run_event_replica(const DsmcSetup& s, const PairTable& pairs, std:
   EventLoop<Selector> loop(p, sel, s.law, rng, c, p.size());
   if (snap) loop.resume(snap->loop, snap->counters);
   std::size_t stop = first;
-  if (ck.hooked())
-    loop.at_refresh([&] {
-      ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
-        if (lending) x.aging = aging, x.stop = stop, x.rng = rng.state(), x.loop = loop.state(), x.counters = c;
-        lend(p, x.particles, lending), lend(out, x.record, lending);
-        lend(at_start, x.tamsd_start, lending), lend(sum, x.tamsd_sum, lending), lend(count, x.tamsd_weight, lending);
-      });
+  PublishedCollisions progress;  // the progress line's view of this replica (dsmc/progress_counter.hpp)
+  loop.at_refresh([&] {
+    progress.at(c.accepted);
+    if (!ck.hooked()) return;
+    ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
+      if (lending) x.aging = aging, x.stop = stop, x.rng = rng.state(), x.loop = loop.state(), x.counters = c;
+      lend(p, x.particles, lending), lend(out, x.record, lending);
+      lend(at_start, x.tamsd_start, lending), lend(sum, x.tamsd_sum, lending), lend(count, x.tamsd_weight, lending);
     });
+  });
   if (aging) {
     loop.cool_to(1.5 * double(p.size()));  // ⟨T⟩ = 2E/(3N) = 1
     loop.reset_clock();
@@ -287,13 +290,15 @@ ReplicaRecord run_time_step_replica(const DsmcSetup& s, const PairTable& pairs, 
   Counters c;
   TimeStepScheme scheme(p, pairs, s.law, rng, c, s.time_step_factor);
   if (snap) scheme.resume(snap->loop, snap->counters);
-  if (ck.hooked())
-    scheme.after_step([&] {
-      ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
-        if (lending) x.stop = j, x.rng = rng.state(), x.loop = scheme.state(), x.counters = c;
-        lend(p, x.particles, lending), lend(out, x.record, lending);
-      });
+  PublishedCollisions progress;  // the progress line's view of this replica (dsmc/progress_counter.hpp)
+  scheme.after_step([&] {
+    progress.at(c.accepted);
+    if (!ck.hooked()) return;
+    ck.at_refresh([&](ReplicaSnapshot& x, bool lending) {
+      if (lending) x.stop = j, x.rng = rng.state(), x.loop = scheme.state(), x.counters = c;
+      lend(p, x.particles, lending), lend(out, x.record, lending);
     });
+  });
   out.seconds_setup += lap(clock);
   for (; j < s.times.size(); ++j) {
     scheme.run_until(s.times[j]);

@@ -51,10 +51,19 @@ struct CorrectionRule {
   std::string name, what;
 };
 
+// A step of `level = "auto"`'s ladder (docs/levels.md, "Choosing a level"): a level tried there, cheapest first, and
+// the most species for which it stays within the choice's cost budget.
+struct AutoStep {
+  std::string level;
+  std::size_t max_species = 0;
+};
+
 struct LevelRules {
+  static constexpr std::string_view auto_level = "auto";  // a scene's `[theory] level = "auto"`: chosen by theory/level_choice.hpp
   std::vector<LevelRule> levels;
+  std::vector<AutoStep> auto_ladder;       // cheapest first
   std::vector<CorrectionRule> corrections;  // every correction some level offers
-  std::string default_level;                // a scene without `[theory] level`
+  std::string default_level;                // a paper scene without `[theory] level` (a user's scene: "auto")
   const LevelRule* find(std::string_view name) const;
   const CorrectionRule* correction(std::string_view name) const;
   std::vector<std::string> scene_levels() const;    // the names a scene may choose

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <regex>
 #include <sstream>
@@ -11,6 +12,7 @@
 #include "enskog.hpp"
 #include "errors.hpp"
 #include "mixture_generators.hpp"
+#include "model_error.hpp"
 #include "observable_catalogue.hpp"
 #include "toml_fields.hpp"
 
@@ -214,9 +216,24 @@ Observables read_observables(TomlFields& f) {
   return o;
 }
 
-TheorySettings read_theory(TomlFields& f, const Mixture& mix, const LevelRules& levels) {
+bool is_paper_scene(const std::string& path);
+
+// A scene that names no level: the papers' own scenes keep the catalogue's default; a user's scene gets "auto", the
+// cheapest level whose computed model error meets [theory] auto_target (docs/levels.md, "Choosing a level").
+std::string default_level(const LevelRules& levels, const std::string& path) {
+  return is_paper_scene(path) ? levels.default_level : std::string(LevelRules::auto_level);
+}
+
+TheorySettings read_theory(TomlFields& f, const Mixture& mix, const LevelRules& levels, const std::string& path) {
   TheorySettings s;
-  s.level = f.choice("level", levels.scene_levels(), levels.default_level);
+  std::vector<std::string> allowed = levels.scene_levels();
+  allowed.emplace_back(LevelRules::auto_level);
+  s.level = f.choice("level", allowed, default_level(levels, path));
+  if (f.has("auto_target") && !s.level_is_auto())
+    f.fail("auto_target", "is the model error level = \"auto\" aims at, but theory.level is \"" + s.level + "\"", "level = \"auto\", or no auto_target");
+  // 1e-4: below it no level computes its model error reliably (the converged levels' own grids: docs/levels.md);
+  // 0.5: above it the comparison says nothing.
+  s.auto_target = f.number("auto_target", 1e-4, 0.5, 0.03);
   s.msd = f.choice("msd", {"eq17", "vacf", "longtime", "closed"}, "eq17");
   s.moments = f.choice("moments", {"auto", "series", "quadrature"}, "auto");
   // 1e-14: below it CVODE works at rounding level; 1e-3: above it no comparison means anything.
@@ -241,6 +258,23 @@ TheorySettings read_theory(TomlFields& f, const Mixture& mix, const LevelRules& 
   return s;
 }
 
+// Every judged quantity can be matched before anything runs: its observable is asked for, and in a history its judged
+// range [t_min, x_max] holds a sample time (else the DSMC would run for a verdict of zero points).
+void check_quantities_measured(const Scene& s, TomlFields& top) {
+  for (const CompareQuantity& q : s.compare) {
+    for (const ObservableDescriptor& d : observable_catalogue())
+      if (std::find(d.quantities.begin(), d.quantities.end(), q.name) != d.quantities.end() && !d.asked(s.observables))
+        top.fail("compare", "quantity \"" + q.name + "\" is judged, but [observables] does not ask for it",
+                 "observables." + d.key + " = true, or no quantity \"" + q.name + "\"");
+    const bool in_time = !s.theory.sweep && !s.observables.distribution_settled && !s.times.empty();
+    if (in_time && std::none_of(s.times.begin(), s.times.end(), [&](double t) { return judges(q, t); }))
+      top.fail("compare", "quantity \"" + q.name + "\" judges " +
+                              (q.x_max < 1e300 ? "t in [" + format_number(q.t_min) + ", " + format_number(q.x_max) + "]" : "t >= " + format_number(q.t_min)) +
+                              ", which holds none of the sample times " + format_number(s.times.front()) + " … " + format_number(s.times.back()),
+               "t_min <= " + format_number(s.times.back()) + " and x_max >= " + format_number(s.times.front()));
+  }
+}
+
 void check_combinations(const Scene& s, TomlFields& top, const LevelRules& levels) {
   const auto& o = s.observables;
   const bool settled_start = s.initial.kind == InitialState::Kind::hcs || s.theory.tracer;
@@ -252,9 +286,11 @@ void check_combinations(const Scene& s, TomlFields& top, const LevelRules& level
     top.fail("theory", "the Sonine solution needs a constant restitution coefficient", "collisions.restitution = number");
   if (o.gamma && s.mixture.size() < 2) top.fail("observables", "gamma = T_1/T_2 needs two species", "two or more species");
   if (s.theory.tracer && s.mixture.size() != 2) top.fail("theory", "tracer = true needs exactly two species", "gas, intruder");
-  // The level's own refusals, as its catalogue entry declares them (theory/levels/level_catalogue.hpp).
-  for (const LevelCondition& c : levels.find(s.theory.level)->conditions)
-    if (c.violated_by(s)) top.fail("theory", c.what, c.allowed);
+  // The level's own refusals, as its catalogue entry declares them (theory/levels/level_catalogue.hpp); "auto" tries
+  // only the levels that accept the scene.
+  if (!s.theory.level_is_auto())
+    for (const LevelCondition& c : levels.find(s.theory.level)->conditions)
+      if (c.violated_by(s)) top.fail("theory", c.what, c.allowed);
   if (s.theory.msd == "closed" && !settled_start)
     top.fail("theory", "msd = \"closed\" holds for a settled start only", "initial.temperatures = \"hcs\" or theory.tracer = true");
   if (s.theory.msd == "closed" && s.restitution.is_viscoelastic())
@@ -352,6 +388,19 @@ std::vector<CompareQuantity> read_compare(TomlFields& f, std::size_t species, co
 // the level computes for that quantity, companions the level has, on a scene that gives them what they need.
 void check_companions(const Scene& s, TomlFields& t, const LevelRules& levels) {
   const std::string& level = s.theory.level;
+  if (s.theory.level_is_auto()) {  // companions and error columns are a named level's
+    for (const CompareQuantity& q : s.compare) {
+      const char* key = !q.error_column.empty() ? "error_column" : "correction_from";
+      if (!q.error_column.empty() || std::any_of(q.correction_from.begin(), q.correction_from.end(), [](const std::string& c) { return c != "maxwell"; }))
+        t.fail(key, "names what one level computes, but theory.level is \"auto\" (chosen when the theory runs)",
+               "a named theory.level (" + [&] {
+                 std::string l;
+                 for (const std::string& n : levels.scene_levels()) l += (l.empty() ? "" : ", ") + n;
+                 return l;
+               }() + "), or no " + key + " (the default comparison)");
+    }
+    return;
+  }
   const LevelRule& rule = *levels.find(level);
   auto quoted = [](const std::vector<std::string>& names, const char* joint) {
     std::string out;
@@ -482,7 +531,15 @@ std::string read_file(const std::string& path) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const LevelRules& levels) { return load_scene_text(read_file(path), path, levels); }
+Scene load_scene(const std::string& path, const LevelRules& levels) {
+  if (path == "-") {  // the scene on standard input (a pipe or a here-document), named <stdin> in messages
+    std::ostringstream text;
+    text << std::cin.rdbuf();
+    if (text.str().empty()) throw InputError("<stdin>: the scene given as - is empty (allowed: a scene's TOML on standard input)");
+    return load_scene_text(text.str(), "<stdin>", levels);
+  }
+  return load_scene_text(read_file(path), path, levels);
+}
 
 Scene load_scene_text(const std::string& text, const std::string& path, const LevelRules& levels) {
   Scene s;
@@ -530,11 +587,11 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Le
   }
   if (top.has("theory")) {
     TomlFields t = top.sub("theory");
-    s.theory = read_theory(t, s.mixture, levels);
+    s.theory = read_theory(t, s.mixture, levels, path);
     t.finish();
   }
   else
-    s.theory.level = levels.default_level;
+    s.theory.level = default_level(levels, path);
   if (top.has("dsmc")) {
     TomlFields t = top.sub("dsmc");
     s.dsmc = read_dsmc(t);
@@ -559,9 +616,10 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Le
     t.finish();
   }
   check_combinations(s, top, levels);
+  check_quantities_measured(s, top);
   top.finish();
   if (s.compare.empty() && s.dsmc.present) {  // judged by default (docs/judging.md, "The default comparison")
-    s.compare = default_comparison(s, levels);
+    if (!s.theory.level_is_auto()) s.compare = default_comparison(s, levels);  // "auto": once the level is chosen
     s.compare_generated = true;
   }
   if (s.theory.sweep && !s.dsmc.at.empty()) {  // theory also at the simulated points (compared there)

@@ -43,9 +43,14 @@ struct Sweep {
 };
 
 struct TheorySettings {
-  // The theory level judged (docs/levels.md; the catalogue's default when the scene names none). A scene at
-  // any other level than the papers' also gets the paper level's curves in theory.tsv as `<column>_paper`.
+  // The theory level judged (docs/levels.md). "auto" (a user's scene that names none): chosen before the theory
+  // runs, by theory/level_choice.hpp, as the cheapest level whose computed model error meets auto_target; a paper
+  // scene that names none: the catalogue's default. A scene at any other level than the papers' also gets the paper
+  // level's curves in theory.tsv as `<column>_paper`.
   std::string level;
+  double auto_target = 0.03;  // level = "auto": the largest computed model error accepted (relative)
+  std::string level_choice;   // level = "auto", once chosen: which level and why, in words
+  bool level_is_auto() const { return level == LevelRules::auto_level; }
   std::string msd = "eq17";        // eq17 | vacf | longtime | closed
   std::string moments = "auto";    // viscoelastic rates: auto | series | quadrature
   double rtol = 1e-11;             // CVODE relative tolerance
@@ -131,6 +136,7 @@ struct Scene {
 
 // Throws InputError("file:line: key: what is wrong (allowed: …)"). `levels`: the theory levels' rules
 // (theory::level_rules(), from the level catalogue).
+// path "-": the scene's text from standard input (named <stdin> in messages).
 Scene load_scene(const std::string& path, const LevelRules& levels);
 // The same from the file's text; `path` only names it in messages (and Scene::file). Fuzzed in tests/fuzz.
 Scene load_scene_text(const std::string& text, const std::string& path, const LevelRules& levels);

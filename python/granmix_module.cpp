@@ -29,6 +29,7 @@
 #include "model/errors.hpp"
 #include "model/scene.hpp"
 #include "model/table.hpp"
+#include "theory/level_choice.hpp"
 #include "theory/levels/level_catalogue.hpp"
 #include "theory/scene_theory.hpp"
 
@@ -203,16 +204,20 @@ arguments out of range (the message names the command line's flag).)");
 
   py::class_<model::Scene>(m, "Scene",
                            "A scene (one paper figure, like the files of compare/scenes/), read and checked as the command line reads it.")
-      .def(py::init([](const py::object& path) { return theory::load_scene(fspath(path)); }), py::arg("path"),
-           "Reads a scene file (TOML); SceneError with file:line: key: message if anything is wrong.")
+      .def(py::init([](const py::object& path) { return theory::with_level_chosen(theory::load_scene(fspath(path))); }), py::arg("path"),
+           "Reads a scene file (TOML); SceneError with file:line: key: message if anything is wrong. A scene with level "
+           "\"auto\" has its level chosen here (level_choice says which and why).")
       .def_static(
-          "from_toml", [](const std::string& text, const std::string& path) { return theory::load_scene_text(text, path); },
+          "from_toml", [](const std::string& text, const std::string& path) { return theory::with_level_chosen(theory::load_scene_text(text, path)); },
           py::arg("text"), py::arg("path") = "<string>", "A scene from TOML text; `path` names it in messages.")
       .def_property_readonly("name", [](const model::Scene& s) { return s.name; })
       .def_property_readonly("source", [](const model::Scene& s) { return s.source; })
       .def_property_readonly("title", [](const model::Scene& s) { return s.title; })
       .def_property_readonly("file", [](const model::Scene& s) { return s.file; })
       .def_property_readonly("level", [](const model::Scene& s) { return s.theory.level; }, "The judged theory level.")
+      .def_property_readonly(
+          "level_choice", [](const model::Scene& s) { return s.theory.level_choice; },
+          "With level \"auto\": the level chosen and why (docs/levels.md, \"Choosing a level\"); otherwise empty.")
       .def_property_readonly("species", [](const model::Scene& s) { return s.mixture.size(); }, "The number of species.")
       .def_property_readonly("has_dsmc", [](const model::Scene& s) { return s.dsmc.present; })
       .def_property_readonly(

@@ -10,6 +10,7 @@
 
 #include "theory/rates/diffusion.hpp"
 #include "theory/grid/galerkin_decay.hpp"
+#include "theory/level_choice.hpp"
 #include "theory/levels/level_catalogue.hpp"
 #include "theory/histories/initial_state.hpp"
 #include "model/enskog.hpp"
@@ -399,6 +400,7 @@ TheoryResult run_level(const model::Scene& scene, const std::string& level) {
 }
 
 TheoryResult run_theory(const model::Scene& scene, std::shared_ptr<GalerkinPairTables> tables) {
+  if (scene.theory.level_is_auto()) return run_theory(with_level_chosen(scene), tables);
   const auto start = std::chrono::steady_clock::now();
   TheoryResult r;
   const double unit = scene_time_unit(scene);

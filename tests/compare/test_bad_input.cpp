@@ -89,7 +89,7 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
       {"model error cap without a computed model error", replace(replace(judged("\"paper\""), "correction_from = \"paper\", ", ""),
                                                                  "relative = 0,", "relative = 0, model_error_max = 0.03,"),
        ":20: compare.quantities[1].model_error_max: caps a computed model error, but this quantity has none"},
-      {"lower level of another level", judged("[\"paper\", \"sonine1\"]"),
+      {"lower level of another level", replace(judged("[\"paper\", \"sonine1\"]"), "msd = \"eq17\"", "level = \"paper\""),
        "compare.correction_from: \"paper\" is a lower level of the kinetic levels, but theory.level is \"paper\""},
       {"kinetic companion of the kinetic level itself", replace(judged("\"kinetic\""), "msd = \"eq17\"", "level = \"kinetic\""),
        "compare.correction_from: \"kinetic\" is the kinetic level under a kinetic-cooling3 or kinetic-converged level, but theory.level is \"kinetic\""},
@@ -115,8 +115,11 @@ TEST_CASE("bad scenes are refused with file:line: key - exit 2 - nothing written
        "compare.error_column: \"phi_error\" is the grid error kinetic-hcs-converged computes for its settled distributions, but the quantity is \"msd\" at theory.level \"kinetic-hcs-converged\""},
       {"unknown error column", replace(judged("\"paper\""), "correction_from = \"paper\"", "error_column = \"msd_error\""),
        ":20: compare.quantities[1].error_column: unknown value \"msd_error\""},
-      {"an error column the level does not compute", replace(judged("\"paper\""), "correction_from = \"paper\"", "error_column = \"D_ratio_error\""),
+      {"an error column the level does not compute",
+       replace(replace(judged("\"paper\""), "correction_from = \"paper\"", "error_column = \"D_ratio_error\""), "msd = \"eq17\"", "level = \"paper\""),
        "compare.error_column: \"D_ratio_error\" is the model error the level kinetic-converged-hcs computes for its D ratios, but the quantity is \"msd\" at theory.level \"paper\""},
+      {"a companion with level auto", replace(judged("\"cooling3\""), "msd = \"eq17\"", "level = \"auto\""),
+       "compare.correction_from: names what one level computes, but theory.level is \"auto\""},
   };
   for (const Case& c : cases) {
     const auto d = test::fresh_dir("bad");

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -347,4 +348,81 @@ TEST_CASE("examples: each of examples/ runs granmix compare at quick fidelity in
     CHECK(seconds < 30.0);
     CHECK(!own_has(r.output, "warning"));
   }
+}
+
+TEST_CASE("own mixture: a fresh scene of fractions, without level, [compare] or [dsmc] paper, is judged with its level chosen and said", "[compare][dsmc]") {
+  // own_small with 4 replicas: the level chosen by auto, a default comparison, a warning for the replicas.
+  const auto x = own_run("fresh-user", "compare", own_replace(own_small, "replicas = 8", "replicas = 4"));
+  INFO(x.r.output);
+  CHECK(x.r.code <= 1);
+  CHECK(own_has(x.r.output, "level: auto chose "));
+  CHECK(own_has(x.r.output, "warning: 4 replicas: z needs >= 8 replicas"));
+  const auto rep = nlohmann::json::parse(std::ifstream(x.dir / "out" / "own" / "report.json"));
+  CHECK(rep["level"] != "auto");
+  CHECK(own_has(rep["level_choice"].get<std::string>(), "auto chose " + rep["level"].get<std::string>()));
+  REQUIRE(rep["quantities"].contains("T"));
+  CHECK(own_has(rep["quantities"]["T"]["why"].get<std::string>(), "level " + rep["level"].get<std::string>()));
+  CHECK(own_has(own_read(x.dir / "out" / "own" / "theory.tsv"), "# level: auto chose "));
+  // its own page: the verdict, the level and why, the warning, the rule as compare/deviations.cpp applies it (a sum)
+  const std::string page = own_read(x.dir / "out" / "own" / "index.html");
+  CHECK(own_has(page, "auto chose "));
+  CHECK(own_has(page, "4 replicas: z needs"));
+  CHECK(own_has(page, "≤ model error · |theory| + z · dsmc_err"));
+  CHECK(!own_has(page, "max(relative"));
+  CHECK(own_has(page, "href=\"theory.tsv\""));
+}
+
+TEST_CASE("own mixture: a scene read from standard input with - gives the file's tables", "[compare][dsmc]") {
+  const auto file = own_run("stdin-file", "compare", own_small);
+  const auto d = test::fresh_dir("stdin-pipe");
+  test::write_file(d / "in.toml", own_small);
+  const auto piped = test::run_granmix("compare - --out " + (d / "out").string() + " < " + (d / "in.toml").string());
+  INFO(piped.output);
+  CHECK(piped.code == file.r.code);
+  for (const char* f : {"theory.tsv", "dsmc.tsv", "deviations.tsv"}) CHECK(own_data_lines(d / "out" / "own" / f) == own_data_lines(file.dir / "out" / "own" / f));
+  CHECK(own_has(own_read(d / "out" / "own" / "theory.tsv"), "file: <stdin>"));
+  const auto empty = test::run_granmix("theory - --out " + (d / "empty").string() + " < /dev/null");
+  CHECK(empty.code == 2);
+  CHECK(own_has(empty.output, "<stdin>: the scene given as - is empty"));
+  CHECK(!std::filesystem::exists(d / "empty"));
+}
+
+TEST_CASE("own mixture: a judged quantity the scene does not measure, or whose range holds no sample time, is refused at load - exit 2", "[compare]") {
+  const std::string judged_msd = own_small + "[compare]\nquantities = [{ name = \"msd\" }]\n";
+  const auto unmeasured = own_run("unmatched-observable", "compare", judged_msd);
+  INFO(unmeasured.r.output);
+  CHECK(unmeasured.r.code == 2);
+  CHECK(own_has(unmeasured.r.output, "compare: quantity \"msd\" is judged, but [observables] does not ask for it (allowed: observables.msd = true"));
+  CHECK(!std::filesystem::exists(unmeasured.dir / "out"));
+  const auto late = own_run("unmatched-range", "compare", own_small + "[compare]\nquantities = [{ name = \"T\", t_min = 5 }]\n");
+  INFO(late.r.output);
+  CHECK(late.r.code == 2);
+  CHECK(own_has(late.r.output, "compare: quantity \"T\" judges t >= 5, which holds none of the sample times"));
+  CHECK(!std::filesystem::exists(late.dir / "out"));
+}
+
+TEST_CASE("progress: one long replica reports its share of the collisions while it runs, on a terminal", "[compare][dsmc]") {
+  if (std::system("command -v script > /dev/null 2>&1") != 0) {
+    WARN("no `script` (util-linux) to give the run a terminal: skipped");
+    return;
+  }
+  const auto d = test::fresh_dir("progress");
+  test::write_file(d / "big.toml", own_replace(own_replace(own_small, "particles = 400, replicas = 8", "particles = 1e6, replicas = 1"), "end = 2", "end = 30"));
+  // script gives granmix a terminal; the line is rewritten with \r at most once a second
+  const std::string cmd = "script -qc '" + std::string(GRANMIX_EXE) + " dsmc " + (d / "big.toml").string() + " --out " + (d / "out").string() +
+                          " --threads 1' /dev/null";
+  FILE* p = popen(cmd.c_str(), "r");
+  REQUIRE(p != nullptr);
+  std::string out;
+  for (int ch; (ch = std::fgetc(p)) != EOF;) out += char(ch);
+  CHECK(pclose(p) == 0);
+  INFO(out);
+  // a line of the replica in flight (0 of 1 units done) with a share above 0 and below 100%
+  bool in_flight = false;
+  for (std::size_t at = 0; (at = out.find("DSMC: 0/1 units, ", at)) != std::string::npos; ++at) {
+    const int share = std::atoi(out.c_str() + at + 17);
+    in_flight = in_flight || (share > 0 && share < 100);
+  }
+  CHECK(in_flight);
+  CHECK(own_has(out, "DSMC: 1/1 units, 100% of the estimated collisions"));
 }

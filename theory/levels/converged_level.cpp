@@ -367,6 +367,11 @@ void declare_converged_levels(LevelCatalogue& c) {
     d.cost = v.grid ? "seconds (v1 Fig. 2: ~1 s)" : v.hcs_converged ? "~0.1-0.5 s per sweep point" : "~0.1-1 s per history, more for many species";
     d.scene_may_choose = v == Variant{} || v == Variant{.cooling_order = 3} || v == Variant{.hcs_converged = true} ||
                          v == Variant{.cooling_order = 3, .grid = true};
+    // level = "auto": a sweep's settled D ratios, then the histories with the converged tracer problem and on the speed
+    // grid, each within seconds up to 10 species
+    if (v == Variant{.hcs_converged = true}) d.auto_step = 4, d.auto_max_species = 10;
+    if (v == Variant{.cooling_order = 3}) d.auto_step = 5, d.auto_max_species = 10;
+    if (v == Variant{.cooling_order = 3, .grid = true}) d.auto_step = 6, d.auto_max_species = 10;
     if (v.hcs_converged)
       d.conditions.push_back({.needs_sweep = true,
                               .what = "level \"" + d.name + "\" is the settled state of a sweep (the converged HCS has no history in time)",

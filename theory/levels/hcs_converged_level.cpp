@@ -98,6 +98,7 @@ void declare_hcs_converged_levels(LevelCatalogue& c) {
   d.applies = "constant restitution for its HCS and distributions (a viscoelastic gas has no HCS)";
   d.cost = "~0.3 s per HCS; its distributions with companions ~10 s (MG Fig. 3)";
   d.scene_may_choose = true;
+  d.auto_step = 7, d.auto_max_species = 10;  // level = "auto": settled distributions, ~10 s with companions
   d.error_columns.push_back({"phi_error", "the grid error " + name + " computes for its settled distributions", {"phi", "G"}});
   d.error_columns.push_back({"delta_error", "the grid error " + name + " computes for its settled distributions", {"delta"}});
   d.companions.push_back({"paper", "paper", "the papers' closure", {}});

@@ -65,6 +65,9 @@ void declare_kinetic_levels(LevelCatalogue& c) {
     d.applies = "any restitution law; the Sonine closure up to 1000 species (Maxwellian above), order 3 up to 100";
     d.cost = v.cooling_order == 2 ? "tens of ms (691 species to t = 10: ~8 s)" : "~0.1 s for a few species (691 species: ~30 s)";
     d.scene_may_choose = v == KineticVariant{} || v == KineticVariant{kinetic_sonine_order, 3, false} || v == KineticVariant{kinetic_sonine_order, 3, true};
+    // level = "auto": the first-Sonine level up to the Sonine closure's 1000 species, order 3 up to 100 (seconds each)
+    if (v == KineticVariant{}) d.auto_step = 2, d.auto_max_species = 1000;
+    if (v == KineticVariant{kinetic_sonine_order, 3, false}) d.auto_step = 3, d.auto_max_species = 100;
     if (v.order == kinetic_sonine_order && !v.shaped && v.cooling_order < 4)
       d.synonyms.push_back(KineticLevel::level_name(v.order, v.cooling_order, false) + "-sonine" + std::to_string(v.order));
     d.companions.push_back({"paper", "paper", "the papers' closure", {}});

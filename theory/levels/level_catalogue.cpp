@@ -64,6 +64,11 @@ const model::LevelRules& LevelCatalogue::rules() const {
     }
     r->levels.push_back(std::move(l));
   }
+  std::vector<const LevelDescriptor*> ladder;
+  for (const auto& d : levels_)
+    if (d->auto_step > 0) ladder.push_back(d.get());
+  std::stable_sort(ladder.begin(), ladder.end(), [](const LevelDescriptor* a, const LevelDescriptor* b) { return a->auto_step < b->auto_step; });
+  for (const LevelDescriptor* d : ladder) r->auto_ladder.push_back({d->name, d->auto_max_species});
   rules_ = std::move(r);
   return *rules_;
 }

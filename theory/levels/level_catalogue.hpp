@@ -45,6 +45,10 @@ struct LevelDescriptor {
   // The papers' own theory: its curves go beside every other level's in theory.tsv (`<column>_paper`, "paper rel").
   bool reported_beside_others = false;
   std::vector<std::string> synonyms;  // other names that find it (kinetic-sonine4 = kinetic)
+  // level = "auto" (theory/level_choice.hpp, docs/levels.md "Choosing a level"): its rung on the ladder, cheapest
+  // first (0: never tried), and the most species for which its cost stays within the choice's budget (seconds).
+  int auto_step = 0;
+  std::size_t auto_max_species = 0;
   std::vector<model::LevelCondition> conditions;
   std::vector<LevelCompanion> companions;
   std::vector<model::ErrorColumnRule> error_columns;

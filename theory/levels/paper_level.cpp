@@ -42,6 +42,7 @@ void declare_paper_levels(LevelCatalogue& c) {
   d.cost = "milliseconds (v2 Fig. 6's 691 species: ~1 s)";
   d.scene_may_choose = true;
   d.reported_beside_others = true;
+  d.auto_step = 1, d.auto_max_species = 100000;  // level = "auto": milliseconds per species (691 species: ~1 s)
   // The temperatures and HCS one Sonine order up (a2 and a3 relaxing): the size of the closure's next correction.
   d.companions.push_back({"cooling3", "kinetic-cooling3", "the temperatures and HCS at Sonine order 3", {}});
   d.construct = [] { return std::make_unique<PaperLevel>(); };
