@@ -21,6 +21,8 @@
 // truncation (theory/grid/converged_hcs.hpp, ~1 s for a binary, ~4 s with its error estimate): per species
 // T_ratio_converged, c_converged, a3_converged; zeta_star_converged; converged_error {T_ratio, c} (the grid's and the
 // partners' truncation, summed: relative, the largest over the species) and converged_passes.
+// Then "warnings" (where the first Sonine breaks down, hcs_warnings.hpp: in the text form one line each on stderr),
+// "inputs" (the options as given), "version" and "git_sha".
 // The computation and the JSON object live in hcs_summary.hpp, shared with the Python module's granmix.hcs.
 #include <fmt/format.h>
 
@@ -38,6 +40,19 @@ struct HcsCommand {
   HcsOptions hcs;
   bool json = false;
 };
+
+// What `granmix hcs --help` lists under its options (the full meanings: docs/user-guide.md, "granmix hcs").
+constexpr const char* output_fields =
+    "Output (docs/user-guide.md, \"granmix hcs\"; ratios relative to species 1):\n"
+    "  text columns: species mass diameter density T_ratio_maxwell T_ratio_sonine c D_ratio tail_exponent D_sonine2_factor;\n"
+    "    then zeta_star, Sonine order 3, the converged HCS (--converged), a binary's tracer and intruder, the one-species\n"
+    "    second Sonine, tau0; warnings on stderr, one line each: \"granmix: warning: hcs [code] species k: ...\"\n"
+    "  --json keys: species [{T_ratio_maxwell, T_ratio_sonine, c, D_ratio, tail_exponent, D_sonine2_factor,\n"
+    "    D_sonine_factors, D_converged_factor, D_converged_change, T_ratio_sonine3, c_sonine3, a3_sonine3, ...}], tau0,\n"
+    "    zeta_star, zeta_star_sonine3, one_species_truncation, (--converged) zeta_star_converged, converged_error,\n"
+    "    converged_passes; warnings [{code, species, message}], inputs, version, git_sha\n"
+    "  warning codes: c_large, c_orders_disagree, T_ratio_orders_disagree, sonine3_no_steady_state, non_finite\n"
+    "    (exit code 0: the numbers are printed, the warning says where the first Sonine is not to be trusted)";
 
 int run(const HcsCommand& command) {
   const HcsSummary h = compute_hcs(command.hcs);
@@ -84,6 +99,9 @@ int run(const HcsCommand& command) {
     std::printf("tau0 = %.17g   (Haff time 2/xi at <T> = 1)\n", d.tau0);
   else
     std::printf("tau0 not given (%s)\n", std::isfinite(d.tau0) ? "dilute MG form: no absolute density" : "no cooling");
+  // In the JSON the warnings are its "warnings" list; in the text form they go to stderr, after the table.
+  std::fflush(stdout);
+  for (const HcsWarning& w : h.warnings) std::fprintf(stderr, "granmix: warning: hcs [%s] %s\n", w.code.c_str(), w.message.c_str());
   return 0;
 }
 
@@ -107,6 +125,7 @@ std::function<int()> add_hcs_command(CLI::App& app) {
   cmd->add_option("--nstar", o->nstar, "reduced density n σ12³ (Enskog χ from MG Eq. 26); 0 = dilute");
   cmd->add_flag("--json", c->json, "one JSON object on stdout");
   cmd->add_flag("--converged", o->converged, "also the HCS without the Sonine truncation (~0.1-1 s for a binary)");
+  cmd->footer(output_fields);
   return [c]() { return run(*c); };
 }
 

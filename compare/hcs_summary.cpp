@@ -4,6 +4,7 @@
 #include <limits>
 #include <string>
 
+#include "granmix_version.hpp"
 #include "model/enskog.hpp"
 #include "model/errors.hpp"
 #include "model/mixture_generators.hpp"
@@ -17,15 +18,15 @@ namespace {
 // The converged tracer problem costs ~1 ms per species and partner (its change comes from the leading block of the
 // same assembly): up to this many species (a 20-species gas, 0.5 s).
 constexpr std::size_t max_converged_species = 20;
-// The converged HCS: N² pair grids per pass, ~25 ms each.
-constexpr std::size_t max_converged_hcs_species = 10;
 
 void require(bool ok, const std::string& msg) {
   if (!ok) throw InputError("hcs: " + msg);
 }
 
 model::Mixture listed_mixture(const HcsOptions& o) {
-  require(!o.mass.empty() && o.mass.size() == o.diameter.size() && o.mass.size() == o.density.size(),
+  require(!o.mass.empty() && !o.diameter.empty() && !o.density.empty(),
+          "--mass, --diameter and --density are required (one value per species each)");
+  require(o.mass.size() == o.diameter.size() && o.mass.size() == o.density.size(),
           "--mass, --diameter and --density need one value per species each");
   std::vector<model::Species> s;
   for (std::size_t k = 0; k < o.mass.size(); ++k) {
@@ -39,40 +40,65 @@ model::Mixture listed_mixture(const HcsOptions& o) {
 }
 
 model::Restitution mg_restitution(const HcsOptions& o) {
-  const bool pairs = o.alpha11 >= 0 || o.alpha22 >= 0 || o.alpha12 >= 0;
+  const bool pairs = o.alpha11 || o.alpha22 || o.alpha12;
   if (!pairs) {
-    require(o.alpha >= 0 && o.alpha <= 1, "--alpha must lie in [0, 1]");
-    return model::Restitution::constant(2, o.alpha);
+    require(o.alpha.has_value(), "--alpha is required with --mu --delta --w (or all of --alpha11, --alpha22, --alpha12)");
+    require(*o.alpha >= 0 && *o.alpha <= 1, "--alpha must lie in [0, 1]");
+    return model::Restitution::constant(2, *o.alpha);
   }
-  require(o.alpha < 0, "give either --alpha or all of --alpha11, --alpha22, --alpha12");
-  for (double a : {o.alpha11, o.alpha22, o.alpha12}) require(a >= 0 && a <= 1, "--alpha11/22/12 must each lie in [0, 1]");
-  return model::Restitution::constant_matrix({{o.alpha11, o.alpha12}, {o.alpha12, o.alpha22}});
+  require(!o.alpha, "give either --alpha or all of --alpha11, --alpha22, --alpha12");
+  require(o.alpha11 && o.alpha22 && o.alpha12, "--alpha11, --alpha22 and --alpha12 are all required when one is given");
+  for (double a : {*o.alpha11, *o.alpha22, *o.alpha12}) require(a >= 0 && a <= 1, "--alpha11/22/12 must each lie in [0, 1]");
+  return model::Restitution::constant_matrix({{*o.alpha11, *o.alpha12}, {*o.alpha12, *o.alpha22}});
 }
 
 model::Mixture checked_mixture(const HcsOptions& o, bool listed, bool mg) {
   require(listed != mg, "use one form: --mass/--diameter/--density/--eps, or --mu/--delta/--w/--alpha");
   require(o.nstar >= 0 && o.nstar < 1.9, "--nstar must lie in [0, 1.9) (n σ_12³ below close packing)");
-  if (listed) require(o.eps >= 0 && o.eps <= 1, "--eps must lie in [0, 1]");
-  if (mg) require(o.mu > 0 && o.delta > 0 && o.w > 0, "--mu, --delta and --w must all be positive");
-  return listed ? listed_mixture(o) : model::montanero_garzo_binary(o.mu, o.delta, o.w, o.nstar);
+  if (listed) {
+    require(o.eps.has_value(), "--eps is required (or give the MG form --mu --delta --w --alpha)");
+    require(*o.eps >= 0 && *o.eps <= 1, "--eps must lie in [0, 1]");
+  }
+  if (mg) {
+    require(o.mu && o.delta && o.w, "--mu, --delta and --w are all required in the MG form (or give --mass --diameter --density --eps)");
+    require(*o.mu > 0 && *o.delta > 0 && *o.w > 0, "--mu, --delta and --w must all be positive");
+  }
+  return listed ? listed_mixture(o) : model::montanero_garzo_binary(*o.mu, *o.delta, *o.w, o.nstar);
+}
+
+// The options as given, in the command line's flags (without the leading "--"): what the numbers were computed from.
+nlohmann::ordered_json inputs_json(const HcsOptions& o) {
+  nlohmann::ordered_json j;
+  if (!o.mass.empty()) j["mass"] = o.mass, j["diameter"] = o.diameter, j["density"] = o.density, j["eps"] = *o.eps;
+  for (const auto& [flag, value] : {std::pair{"mu", o.mu}, std::pair{"delta", o.delta}, std::pair{"w", o.w}, std::pair{"alpha", o.alpha},
+                                    std::pair{"alpha11", o.alpha11}, std::pair{"alpha22", o.alpha22}, std::pair{"alpha12", o.alpha12}})
+    if (value) j[flag] = *value;
+  j["nstar"] = o.nstar;
+  j["converged"] = o.converged;
+  return j;
 }
 
 }  // namespace
 
 HcsSummary compute_hcs(const HcsOptions& o) {
-  const bool listed = !o.mass.empty() || !o.diameter.empty() || !o.density.empty();
-  const bool mg = o.mu > 0 || o.delta > 0 || o.w > 0;
-  HcsSummary h(checked_mixture(o, listed, mg));
+  const bool listed = !o.mass.empty() || !o.diameter.empty() || !o.density.empty() || o.eps;
+  const bool mg = o.mu || o.delta || o.w || o.alpha || o.alpha11 || o.alpha22 || o.alpha12;
+  HcsSummary h(o, checked_mixture(o, listed, mg));
   const model::Mixture& mix = h.mix;
-  const model::Restitution law = listed ? model::Restitution::constant(mix.size(), o.eps) : mg_restitution(o);
+  const model::Restitution law = listed ? model::Restitution::constant(mix.size(), *o.eps) : mg_restitution(o);
   auto chi = o.nstar > 0 ? model::enskog_contact_values(mix) : model::dilute_contact_values(mix.size());
   const theory::CollisionRates rates(mix, law, chi);
   h.d = theory::settled_diffusion(rates);
   const theory::SettledDiffusion& d = h.d;
   h.sonine = theory::sonine_hcs(mix, law, chi);
   // Sonine order 3 (a₂ and a₃ of every species, the level kinetic-cooling3's HCS): the next correction of the
-  // first-Sonine ratios and cumulants, up to as many species as that level carries a₃ for.
-  if (mix.size() <= 100) h.third = theory::sonine_hcs(mix, law, chi, false, theory::SonineSolver::automatic, 3);
+  // first-Sonine ratios and cumulants, up to as many species as that level carries a₃ for. Where its closure has no
+  // steady shape (extreme temperature ratios) it is omitted and the reason kept for the warnings.
+  if (mix.size() <= 100) try {
+      h.third = theory::sonine_hcs(mix, law, chi, false, theory::SonineSolver::automatic, 3);
+    } catch (const NumericalError& e) {
+      h.third_failure = e.what();
+    }
   h.has_tau0 = std::isfinite(d.tau0) && (listed || o.nstar > 0);
   // NaN where the second-Sonine tracer problem has no diffusive solution (sonine2_diffusion.hpp).
   h.sonine2.resize(mix.size());
@@ -109,8 +135,9 @@ HcsSummary compute_hcs(const HcsOptions& o) {
     h.grid = theory::converged_hcs(rates, true);
   }
   // The one-species second Sonine needs a single constant restitution (not MG's per-pair alphas).
-  h.eps_one = listed ? o.eps : o.alpha;
+  h.eps_one = listed ? *o.eps : o.alpha.value_or(-1.0);
   if (h.eps_one >= 0) h.trunc = theory::sonine_truncation(h.eps_one);
+  h.warnings = hcs_warnings(h);
   return h;
 }
 
@@ -160,6 +187,10 @@ nlohmann::ordered_json hcs_json(const HcsSummary& h) {
     if (std::isfinite(trunc->a2_relative())) t["a2_relative_change"] = trunc->a2_relative();  // 0/0 at ε = 1
     j["one_species_truncation"] = t;
   }
+  j["warnings"] = hcs_warnings_json(h.warnings);
+  j["inputs"] = inputs_json(h.options);
+  j["version"] = granmix::version;
+  j["git_sha"] = granmix::git_sha;
   return j;
 }
 

@@ -180,9 +180,7 @@ PYBIND11_MODULE(_core, m) {
          bool converged) {
         compare::HcsOptions o;  // None: the command line's "not given"
         o.mass = mass, o.diameter = diameter, o.density = density, o.nstar = nstar, o.converged = converged;
-        o.eps = eps.value_or(o.eps), o.mu = mu.value_or(o.mu), o.delta = delta.value_or(o.delta), o.w = w.value_or(o.w);
-        o.alpha = alpha.value_or(o.alpha), o.alpha11 = alpha11.value_or(o.alpha11), o.alpha22 = alpha22.value_or(o.alpha22);
-        o.alpha12 = alpha12.value_or(o.alpha12);
+        o.eps = eps, o.mu = mu, o.delta = delta, o.w = w, o.alpha = alpha, o.alpha11 = alpha11, o.alpha22 = alpha22, o.alpha12 = alpha12;
         const auto start = std::chrono::steady_clock::now();
         const nlohmann::ordered_json j = compare::hcs_json(compare::compute_hcs(o));
         last_hcs_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -197,7 +195,8 @@ PYBIND11_MODULE(_core, m) {
 Two forms, as on the command line: mass, diameter, density (one value per species) and eps; or Montanero and
 Garzo's binary mu, delta, w with alpha (or alpha11, alpha22, alpha12). nstar > 0: Enskog contact values at the reduced
 density n sigma_12^3. converged: also the HCS without the Sonine truncation (~1 s for a binary). Raises SceneError for
-arguments out of range (the message names the command line's flag).)");
+arguments out of range or missing (the message names the command line's flag). The dict's "warnings" list says where the
+first-Sonine numbers break down ({"code", "species", "message"}; docs/user-guide.md), "inputs" echoes the arguments.)");
   // The seconds of the last granmix.hcs's C++ computation (compute_hcs and hcs_json): the rest of the call's time is the
   // binding's own (tests/python measure it).
   m.def("_last_hcs_seconds", [] { return last_hcs_seconds; });

@@ -1,10 +1,15 @@
 // granmix hcs as users run it, both forms (masses/diameters/densities and MG's μ, δ, w, α) and --json: its fields
-// against the in-process solvers, closed forms (Chapman–Cowling's 59/58) and its messages (split from test_commands.cpp).
+// against the in-process solvers, closed forms (Chapman–Cowling's 59/58), its messages, and its warnings where the
+// first Sonine breaks down (compare/hcs_warnings.hpp) (split from test_commands.cpp).
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "compare/hcs_summary.hpp"
+#include "granmix_version.hpp"
 #include "model/enskog.hpp"
 #include "run_cli.hpp"
 #include "theory/rates/diffusion.hpp"
@@ -163,4 +168,175 @@ TEST_CASE("granmix hcs --converged: the HCS without the Sonine truncation agains
   const auto many = test::run_granmix("hcs --mass 1,2,3,4,5,6,7,8,9,10,11 --diameter 1,1,1,1,1,1,1,1,1,1,1 --density 1,1,1,1,1,1,1,1,1,1,1 --eps 0.5 --converged");
   CHECK(many.code == 2);
   CHECK(many.output.find("--converged: at most 10 species") != std::string::npos);
+}
+
+namespace {
+
+// The codes of `granmix hcs --json`'s warnings, each as "code:species" (species 0: the whole mixture).
+std::vector<std::string> hcs_warning_codes(const nlohmann::json& j) {
+  std::vector<std::string> codes;
+  for (const auto& w : j.at("warnings")) codes.push_back(w.at("code").get<std::string>() + ":" + std::to_string(w.value("species", 0)));
+  return codes;
+}
+
+bool lists_code(const std::vector<std::string>& codes, const std::string& code) {
+  return std::find(codes.begin(), codes.end(), code) != codes.end();
+}
+
+}  // namespace
+
+TEST_CASE("granmix hcs warns where the first Sonine breaks down: masses 1:1000 at n2 = 1e-4", "[compare]") {
+  // c₁ = 1.69 at first Sonine, 0.54 at order 3 (the converged HCS: 1.20 ± 0.35): c_large and c_orders_disagree for
+  // species 1; T₂/T₁ 3042 against 2706 at order 3 (11%): T_ratio_orders_disagree for species 2.
+  const std::string args = "hcs --mass 1,1000 --diameter 1,10 --density 0.1,1e-4 --eps 0.5";
+  const auto r = test::run_granmix(args + " --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  const auto codes = hcs_warning_codes(j);
+  CHECK(lists_code(codes, "c_large:1"));
+  CHECK(lists_code(codes, "c_orders_disagree:1"));
+  CHECK(lists_code(codes, "T_ratio_orders_disagree:2"));
+  CHECK_FALSE(lists_code(codes, "c_large:2"));  // c₂ = −0.44: within the bound
+  for (const auto& w : j["warnings"]) CHECK(w["message"].get<std::string>().find("--converged") != std::string::npos);
+  // The criteria's numbers are the summary's own: c and c_sonine3 as printed beside them.
+  const auto& s1 = j["species"][0];
+  CHECK(std::abs(s1["c"].get<double>()) > 0.5);
+  CHECK(std::abs(s1["c"].get<double>() - s1["c_sonine3"].get<double>()) > 0.2);
+  // The text form: the table on stdout as before, one line per warning on stderr naming code, species and numbers.
+  const auto text = test::run_granmix_split(args);
+  INFO(text.error);
+  CHECK(text.code == 0);
+  CHECK(text.output.find("T_ratio_sonine") != std::string::npos);
+  CHECK(text.output.find("warning") == std::string::npos);
+  CHECK(text.error.find("granmix: warning: hcs [c_large] species 1: c = 1.685 at first Sonine") != std::string::npos);
+  CHECK(text.error.find("[c_orders_disagree] species 1: c = 1.685 at first Sonine, 0.5374 at Sonine order 3") != std::string::npos);
+  CHECK(text.error.find("[T_ratio_orders_disagree] species 2") != std::string::npos);
+  CHECK(std::count(text.error.begin(), text.error.end(), '\n') == static_cast<long>(codes.size()));
+  // With --converged the warnings point at the converged fields instead.
+  const auto conv = nlohmann::json::parse(test::run_granmix(args + " --json --converged").output);
+  REQUIRE(!conv["warnings"].empty());
+  CHECK(conv["warnings"][0]["message"].get<std::string>().find("c_converged") != std::string::npos);
+}
+
+TEST_CASE("granmix hcs warns where the first Sonine breaks down: masses 1:1e6 at eps = 0.01", "[compare]") {
+  // T₂/T₁ = 1.1e7 at first Sonine with c₁ = 7.7; order 3 puts T₂/T₁ at 6.0e6 and c₁ at −1.2.
+  const auto r = test::run_granmix("hcs --mass 1,1e6 --diameter 1,100 --density 0.1,1e-6 --eps 0.01 --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(j["species"][1]["T_ratio_sonine"].get<double>() == Approx(1.1e7).epsilon(0.02));
+  const auto codes = hcs_warning_codes(j);
+  CHECK(lists_code(codes, "c_large:1"));
+  CHECK(lists_code(codes, "c_orders_disagree:1"));
+  CHECK(lists_code(codes, "T_ratio_orders_disagree:2"));
+  const auto text = test::run_granmix_split("hcs --mass 1,1e6 --diameter 1,100 --density 0.1,1e-6 --eps 0.01");
+  CHECK(text.code == 0);
+  CHECK(text.error.find("[T_ratio_orders_disagree] species 2: T_ratio_sonine = 1.1") != std::string::npos);
+}
+
+TEST_CASE("granmix hcs: the order-3 closure without a steady shape is a warning, not a failure", "[compare]") {
+  // Masses 1:1e6 of equal size at n₂/n₁ = 1e-3 … 1e-4: T_max/T_min ~ 1e13, where the order-3 linear system is singular.
+  const auto r = test::run_granmix("hcs --mass 1,1e6 --diameter 1,1 --density 0.1,1e-4 --eps 0.01 --json");
+  INFO(r.output);
+  REQUIRE(r.code == 0);
+  const auto j = nlohmann::json::parse(r.output);
+  CHECK(lists_code(hcs_warning_codes(j), "sonine3_no_steady_state:0"));
+  CHECK(!j.contains("zeta_star_sonine3"));
+  CHECK(!j["species"][0].contains("c_sonine3"));
+}
+
+TEST_CASE("granmix hcs: no warning for the paper systems, nor for one species at any restitution", "[compare]") {
+  // Equal-size binaries with mass ratios up to 10 and ε ≥ 0.5 (MG Figs. 1–7), v1's binaries and mixtures at ε = 0.5
+  // (Figs. 1–3, 6, 7): their first Sonine is what DSMC confirms (docs/physics.md §6).
+  for (const char* args : {"--mu 10 --delta 2 --w 1 --alpha 0.5", "--mu 2 --delta 1 --w 1 --alpha 0.5", "--mu 4 --delta 0.5 --w 1 --alpha 0.5",
+                           "--mu 0.1 --delta 2 --w 1 --alpha 0.5", "--mu 4 --delta 0.25 --w 1 --alpha 0.5", "--mu 4 --delta 4 --w 1 --alpha 0.8",
+                           "--mu 2 --delta 0.5 --w 2 --alpha 0.6", "--mu 4 --delta 0.5 --w 1 --alpha 0.3", "--mu 10 --delta 2 --w 1 --alpha 0.9",
+                           "--mass 1,100 --diameter 1,1 --density 0.1,0.1 --eps 0.5",
+                           "--mass 1,100 --diameter 1,4.641588833612779 --density 0.1,0.1 --eps 0.5",
+                           "--mass 1,100 --diameter 1,4.641588833612779 --density 0.1,0.001 --eps 0.5",
+                           "--mass 1,100,500 --diameter 1,4.641588833612779,7.937005259840998 --density 0.1,0.1,0.1 --eps 0.5",
+                           "--mass 1,2,3,4 --diameter 1,1.2599210498948732,1.4422495703074083,1.5874010519681994 --density 0.1,0.1,0.1,0.1 --eps 0.5"}) {
+    const auto r = test::run_granmix(std::string("hcs ") + args + " --json");
+    INFO(args << " -> " << r.output);
+    REQUIRE(r.code == 0);
+    CHECK(nlohmann::json::parse(r.output)["warnings"].empty());
+    const auto text = test::run_granmix_split(std::string("hcs ") + args);
+    CHECK(text.error.empty());
+  }
+  // One species at ε = 0, the largest cumulant a single species has: van Noije–Ernst's c = 32/81 (closed form) and
+  // Brilliantov–Pöschel's second Sonine c = 0.24 (|Δc| = 0.15): both below the bounds 0.5 and 0.2.
+  const auto one = nlohmann::json::parse(test::run_granmix("hcs --mass 1 --diameter 1 --density 0.1 --eps 0 --json").output);
+  CHECK(one["species"][0]["c"].get<double>() == Approx(32.0 / 81).epsilon(1e-12));
+  CHECK(one["warnings"].empty());
+}
+
+TEST_CASE("granmix hcs: a missing required flag says so, exit 2, nothing on stdout", "[compare]") {
+  const std::vector<std::pair<std::string, std::string>> cases{
+      {"hcs --mass 1,2 --diameter 1,1 --density 0.1,0.1", "hcs: --eps is required (or give the MG form --mu --delta --w --alpha)"},
+      {"hcs --mass 1,2 --diameter 1,1 --density 0.1,0.1 --json", "hcs: --eps is required"},
+      {"hcs --mass 1,2 --density 0.1,0.1 --eps 0.5", "hcs: --mass, --diameter and --density are required"},
+      {"hcs --mu 2 --delta 1 --w 1", "hcs: --alpha is required"},
+      {"hcs --mu 2 --w 1 --alpha 0.5", "hcs: --mu, --delta and --w are all required in the MG form"},
+      {"hcs --mu 2 --delta 1 --w 1 --alpha11 0.5 --alpha22 0.5", "hcs: --alpha11, --alpha22 and --alpha12 are all required"}};
+  for (const auto& [args, message] : cases) {
+    const auto r = test::run_granmix_split(args);
+    INFO(args << " -> " << r.error);
+    CHECK(r.code == 2);
+    CHECK(r.output.empty());
+    CHECK(r.error.find(message) != std::string::npos);
+  }
+  // A value given out of range keeps its range message.
+  CHECK(test::run_granmix_split("hcs --mass 1,2 --diameter 1,1 --density 0.1,0.1 --eps -0.5").error.find("--eps must lie in [0, 1]") !=
+        std::string::npos);
+}
+
+TEST_CASE("granmix hcs --json echoes its inputs and the version", "[compare]") {
+  const auto j = nlohmann::json::parse(test::run_granmix("hcs --mass 1,4 --diameter 1,1.5 --density 0.1,0.05 --eps 0.8 --nstar 0.1 --json").output);
+  const auto& in = j["inputs"];
+  CHECK(in["mass"] == nlohmann::json::array({1.0, 4.0}));
+  CHECK(in["diameter"] == nlohmann::json::array({1.0, 1.5}));
+  CHECK(in["density"] == nlohmann::json::array({0.1, 0.05}));
+  CHECK(in["eps"].get<double>() == 0.8);
+  CHECK(in["nstar"].get<double>() == 0.1);
+  CHECK(in["converged"].get<bool>() == false);
+  CHECK(!in.contains("mu"));
+  CHECK(j["version"].get<std::string>() == granmix::version);
+  CHECK(j["git_sha"].get<std::string>() == granmix::git_sha);
+  CHECK(j["warnings"].is_array());
+  const auto mg = nlohmann::json::parse(test::run_granmix("hcs --mu 2 --delta 1 --w 1 --alpha11 0.9 --alpha22 0.7 --alpha12 0.8 --json").output)["inputs"];
+  CHECK(mg["mu"].get<double>() == 2.0);
+  CHECK(mg["alpha12"].get<double>() == 0.8);
+  CHECK(!mg.contains("alpha"));
+  CHECK(!mg.contains("mass"));
+}
+
+TEST_CASE("granmix hcs --help lists the output fields and the warning codes", "[compare]") {
+  const auto r = test::run_granmix("hcs --help");
+  CHECK(r.code == 0);
+  for (const char* field : {"T_ratio_sonine", "D_sonine2_factor", "zeta_star", "one_species_truncation", "converged_error", "warnings", "inputs",
+                            "version", "c_large", "T_ratio_orders_disagree", "docs/user-guide.md"})
+    CHECK(r.output.find(field) != std::string::npos);
+}
+
+TEST_CASE("granmix hcs: a non-finite first-Sonine field is a warning of its own, and trips no other", "[compare]") {
+  // MG Fig. 1's mixture (no warning) with its c₂ and ζ* replaced by NaN, as a broken solve would leave them.
+  compare::HcsOptions o;
+  o.mu = 10, o.delta = 2, o.w = 1, o.alpha = 0.5;
+  compare::HcsSummary h = compare::compute_hcs(o);
+  REQUIRE(h.warnings.empty());
+  h.sonine.c[1] = std::nan("");
+  h.sonine.zeta_star = std::numeric_limits<double>::infinity();
+  const auto w = compare::hcs_warnings(h);
+  REQUIRE(w.size() == 2);
+  CHECK(w[0].code == "non_finite");
+  CHECK(w[0].species == 0);
+  CHECK(w[0].message.find("zeta_star") != std::string::npos);
+  CHECK(w[1].code == "non_finite");
+  CHECK(w[1].species == 2);
+  CHECK(w[1].message == "species 2: c = nan is not finite");
+  // In the JSON the mixture's warning has no "species".
+  const auto j = compare::hcs_warnings_json(w);
+  CHECK(!j[0].contains("species"));
+  CHECK(j[1]["species"].get<std::size_t>() == 2);
 }

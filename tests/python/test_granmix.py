@@ -96,6 +96,7 @@ HCS_CASES = [
     {'mu': 2.0, 'delta': 1.0, 'w': 1.0, 'alpha': 0.8},
     {'mu': 0.5, 'delta': 2.0, 'w': 1.2, 'alpha11': 0.9, 'alpha22': 0.7, 'alpha12': 0.8, 'nstar': 0.1},
     {'mass': [1.0, 4.0], 'diameter': [1.0, 1.0], 'density': [0.1, 0.1], 'eps': 0.8, 'converged': True},
+    {'mass': [1.0, 1000.0], 'diameter': [1.0, 10.0], 'density': [0.1, 1e-4], 'eps': 0.5},
 ]
 
 
@@ -141,7 +142,9 @@ def test_hcs_errors_are_scene_errors_with_the_command_lines_message():
              {'eps': 0.5},
              {'mass': [1.0, 2.0], 'diameter': [1.0, 1.0], 'density': [0.1, 0.1], 'eps': 0.5, 'mu': 2.0},
              {'mu': 2.0, 'delta': 1.0, 'w': 1.0, 'alpha': 0.8, 'alpha12': 0.5},
-             {'mass': [1.0, 2.0], 'diameter': [1.0, 1.0], 'density': [0.1, 0.1], 'eps': 0.5, 'nstar': 2.0}]
+             {'mass': [1.0, 2.0], 'diameter': [1.0, 1.0], 'density': [0.1, 0.1], 'eps': 0.5, 'nstar': 2.0},
+             {'mass': [1.0, 2.0], 'diameter': [1.0, 1.0], 'density': [0.1, 0.1]},
+             {'mu': 2.0, 'delta': 1.0, 'w': 1.0}]
     for kw in cases:
         with pytest.raises(granmix.SceneError) as e:
             granmix.hcs(**kw)
@@ -149,6 +152,18 @@ def test_hcs_errors_are_scene_errors_with_the_command_lines_message():
         assert r.returncode == 2
         assert str(e.value) == cli_message(r)
         assert isinstance(e.value, ValueError)
+
+
+def test_hcs_warnings_inputs_and_version_are_in_the_dict():
+    """Masses 1:1000 of one material: c1 = 1.69 at first Sonine, 0.54 at order 3 (docs/user-guide.md, warnings)."""
+    h = granmix.hcs(mass=[1.0, 1000.0], diameter=[1.0, 10.0], density=[0.1, 1e-4], eps=0.5)
+    codes = {(w['code'], w.get('species')) for w in h['warnings']}
+    assert {('c_large', 1), ('c_orders_disagree', 1), ('T_ratio_orders_disagree', 2)} <= codes
+    assert all('--converged' in w['message'] for w in h['warnings'])
+    assert h['inputs'] == {'mass': [1.0, 1000.0], 'diameter': [1.0, 10.0], 'density': [0.1, 1e-4], 'eps': 0.5, 'nstar': 0.0,
+                           'converged': False}
+    assert (h['version'], h['git_sha']) == (granmix.__version__, granmix._core.git_sha)
+    assert granmix.hcs(mu=10.0, delta=2.0, w=1.0, alpha=0.5)['warnings'] == []  # MG Fig. 1's mixture
 
 
 def test_hcs_refuses_positional_unknown_and_mistyped_arguments():
