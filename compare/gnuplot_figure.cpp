@@ -128,7 +128,7 @@ void species_curves(Panel& pn, const model::Table& theory, const model::Table* d
   const std::string& y = pn.y;
   pn.plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}')) with linespoints ls 1 pt 6 ps 0.5 notitle",
                                  last_block_start(theory), y));
-  legend.species.emplace_back(-1, fmt::format("theory ({}) at t = {:g}", level, theory.rows.back()[0]));
+  legend.species.emplace_back(-1, fmt::format("theory: {}, t = {:g}", level, theory.rows.back()[0]));
   if (theory.column(y + "_paper") >= 0) {  // the paper level dashed beside the judged level, as the time plots draw it
     pn.plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}_paper')) with lines ls 1 dt 2 notitle",
                                    last_block_start(theory), y));
@@ -221,6 +221,25 @@ void guides(Panel& pn, const model::Scene& s, const model::Table& theory, const 
   }
 }
 
+// The values a panel's y range holds: the judged level's and DSMC's, and the curves drawn beside them (paper level,
+// MSD increments, Maxwell–Boltzmann) where they stay within a decade (a log axis) or half the range's width of them;
+// beyond, those curves leave the frame instead of squashing the data.
+std::vector<double> y_values(const Panel& pn, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn, bool maxwell) {
+  std::vector<double> v;
+  auto add = [&](const model::Table& t, const std::string& column, double lo, double hi) {
+    for (const double x : figure::column_values(t, column, drawn))
+      if ((!pn.logy || x > 0.0) && x >= lo && x <= hi) v.push_back(x);
+  };
+  add(theory, pn.y, -INFINITY, INFINITY);
+  if (dsmc) add(*dsmc, pn.y, -INFINITY, INFINITY);
+  if (v.empty()) return v;
+  const auto [a, b] = std::minmax_element(v.begin(), v.end());
+  const double lo = pn.logy ? *a / 10.0 : *a - 0.5 * (*b - *a), hi = pn.logy ? *b * 10.0 : *b + 0.5 * (*b - *a);
+  for (const std::string& beside : {pn.y + "_paper", pn.y + "_increment", maxwell ? pn.y + "_maxwell" : std::string()})
+    if (!beside.empty()) add(theory, beside, lo, hi);
+  return v;
+}
+
 // An axis' range: the data's, padded by `pad` of its width (of its decades on a log axis). The x range is the same
 // for every panel, main and residual alike.
 std::string data_range(char axis, const std::vector<double>& v, bool log, double pad) {
@@ -262,7 +281,7 @@ double right_margin(const std::vector<std::string>& entries) {
     for (std::size_t i = a + 7; i < std::min(b, e.size()); ++i) chars += (e[i] & 0xC0) != 0x80;  // UTF-8: count code points
     longest = std::max(longest, chars);
   }
-  return std::clamp(1.0 - (75.0 + 8.2 * double(longest) + 20.0) / width_px, 0.55, 0.8);
+  return std::clamp(1.0 - (75.0 + 8.2 * double(longest) + 20.0) / width_px, 0.5, 0.8);
 }
 
 // Residual tics every step (1, 2 or 5 times a power of ten, at most 0.7 of the range) up to 0.75 of the range: the
@@ -297,12 +316,7 @@ std::string figure_script(const model::Scene& s, const model::Table& theory, con
     if (p.x == "species") species_curves(pn, theory, dsmc, legend, s.theory.level);
     else {
       species_rows(pn, s, theory, dsmc, drawn, legend), guides(pn, s, theory, drawn);
-      // Every curve drawn: the level, the companions beside it, DSMC.
-      for (const auto& [table, column] : {std::pair{&theory, pn.y}, {&theory, pn.y + "_paper"}, {&theory, pn.y + "_increment"},
-                                          {&theory, p.maxwell ? pn.y + "_maxwell" : pn.y}, {dsmc, pn.y}})
-        if (table)
-          for (const double v : figure::column_values(*table, column, drawn))
-            if (!pn.logy || v > 0.0) pn.yvalues.push_back(v);
+      pn.yvalues = y_values(pn, theory, dsmc, drawn, p.maxwell);
     }
     if (!deviations.empty()) pn.residual = figure::residual_panel(s, pn.y, deviations, theory, int(i));
     if (pn.plots.empty()) continue;
@@ -366,7 +380,7 @@ std::string figure_script(const model::Scene& s, const model::Table& theory, con
   const int px = width_px, py = int(std::lround(rows * 112.0));
   gp += "do for [gm_out in \"png pdf\"] {\n";
   gp += fmt::format("if (gm_out eq \"png\") {{\n  set terminal pngcairo size {},{} enhanced font 'DejaVu Sans,12'\n  set output '{}.png'\n  gm_small = ',10'\n}} else {{\n", px, py, s.name);
-  gp += fmt::format("  set terminal pdfcairo size 7in,{:.2f}in enhanced font 'DejaVu Sans,9'\n  set output '{}.pdf'\n  gm_small = ',7.5'\n}}\n", 7.0 * py / px, s.name);
+  gp += fmt::format("  set terminal pdfcairo size 7in,{:.2f}in enhanced font 'DejaVu Sans,8.5'\n  set output '{}.pdf'\n  gm_small = ',7'\n}}\n", 7.0 * py / px, s.name);
   gp += body + "}\n";
   return gp;
 }
