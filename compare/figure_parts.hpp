@@ -1,8 +1,10 @@
 #pragma once
 // The parts of a scene's figure that compare/gnuplot_figure.cpp assembles into one gnuplot script: the axes'
-// helpers (figure_axes.cpp) and the residual panel under a judged curve (figure_residuals.cpp).
+// helpers (figure_axes.cpp), the curves and the legend (figure_curves.cpp), the guides (figure_guides.cpp) and the
+// residual panel under a judged curve (figure_residuals.cpp).
 #include <cmath>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "deviations.hpp"
@@ -36,5 +38,41 @@ struct ResidualPanel {
 // panel's datablocks.
 ResidualPanel residual_panel(const model::Scene& s, const std::string& y, const std::vector<Deviation>& d,
                              const model::Table& theory, int index);
+
+// The legend, drawn once in the figure's right margin: each species once in its colour, then the line and symbol
+// styles (theory level, paper level, DSMC, tolerance band) once in black.
+struct Legend {
+  std::vector<std::pair<int, std::string>> species;  // species number (-1: a curve over species), its text
+  std::vector<std::string> styles;                   // keyentry plot elements
+
+  void add_species(int k, const std::string& text);  // a second quantity's text for the same species joins with " / "
+  void add_style(const std::string& entry);
+  std::vector<std::string> entries() const;          // the keyentry plot elements, species first
+};
+
+// One quantity's panel and the residual panel under it.
+struct Panel {
+  std::string y, ylabel;
+  bool logy = false;
+  std::vector<std::string> plots, labels;  // plot elements; `set label` commands (the guides' names)
+  std::vector<double> yvalues;             // the values its y range holds; empty: autoscaled
+  ResidualPanel residual;
+};
+
+// Species in row order within one x value: long-form tables cycle through them.
+std::vector<int> species_cycle(const model::Table& t);
+// x = "species": one curve over species at the last sample time (v1 Fig. 8).
+void species_curves(Panel& pn, const model::Table& theory, const model::Table* dsmc, Legend& legend, const std::string& level);
+// Theory, its companions drawn beside it, and DSMC, one colour per species.
+void species_rows(Panel& pn, const model::Scene& s, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn,
+                  Legend& legend);
+// The values a panel's y range holds: the judged level's and DSMC's, and the curves drawn beside them (paper level,
+// MSD increments, Maxwell–Boltzmann) where they stay within a decade (a log axis) or half the range's width of them;
+// beyond, those curves leave the frame instead of squashing the data.
+std::vector<double> y_values(const Panel& pn, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn, bool maxwell);
+// Guide slopes ([plot] slopes), anchored on the last drawn species' curve (t² at its first point, the others at its
+// last) and drawn only over the x range where they stay within the data's x and y ranges, so that they never stretch
+// the axes; each named at one end.
+void guides(Panel& pn, const model::Scene& s, const model::Table& theory, const std::vector<int>& drawn);
 
 }  // namespace granmix::compare::figure

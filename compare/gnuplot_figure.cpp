@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <tuple>
 
 #include "figure_parts.hpp"
 #include "figure_style.hpp"
@@ -16,88 +15,10 @@ namespace granmix::compare {
 
 namespace {
 
+using figure::Legend;
+using figure::Panel;
 using figure::quote;
-using figure::species_style;
-
-// Species in row order within one x value: long-form tables cycle through them.
-std::vector<int> species_cycle(const model::Table& t) {
-  std::vector<int> s;
-  const int sc = t.column("species");
-  if (sc < 0 || t.rows.empty()) return s;
-  for (const auto& row : t.rows) {
-    const int k = int(row[sc]);
-    if (!s.empty() && k == s.front()) break;
-    s.push_back(k);
-  }
-  return s;
-}
-
-// First row of the last block of equal first-column values (the last time of a long-form table).
-std::size_t last_block_start(const model::Table& t) {
-  std::size_t r = t.rows.size();
-  while (r > 0 && t.rows[r - 1][0] == t.rows.back()[0]) --r;
-  return r;
-}
-
-// The error-bar columns of a DSMC curve: ±err, except that on a log axis a bar reaching zero or below
-// (a histogram bin with a handful of counts) stops at a tenth of the value instead of stretching the
-// axis over ten decades.
-std::string error_bar(const std::string& y, bool logy) {
-  const std::string v = "column('" + y + "')", e = "column('" + y + "_err')";
-  if (!logy) return "(" + e + ")";
-  return "(" + v + " - " + e + " > " + v + "/10 ? " + v + " - " + e + " : " + v + "/10):(" + v + " + " + e + ")";
-}
-
-// The legend, drawn once in the figure's right margin: each species once in its colour, then the line and symbol
-// styles (theory level, paper level, DSMC, tolerance band) once in black.
-struct Legend {
-  std::vector<std::pair<int, std::string>> species;  // species number (-1: a curve over species), its text
-  std::vector<std::string> styles;                   // keyentry plot elements
-
-  void add_species(int k, const std::string& text) {
-    const auto it = std::find_if(species.begin(), species.end(), [&](const auto& e) { return e.first == k; });
-    if (it == species.end()) species.emplace_back(k, text);
-    else if (it->second.find(text) == std::string::npos) it->second += " / " + text;
-  }
-  void add_style(const std::string& entry) {
-    if (std::find(styles.begin(), styles.end(), entry) == styles.end()) styles.push_back(entry);
-  }
-  std::vector<std::string> entries() const {
-    std::vector<std::string> out;
-    for (const auto& [k, text] : species)
-      out.push_back(fmt::format("keyentry with lines ls {} dt 1 title {}", k < 0 ? 1 : species_style(k), quote(text)));
-    out.insert(out.end(), styles.begin(), styles.end());
-    return out;
-  }
-};
-
-std::string black_line(int dt, const std::string& text) {
-  return fmt::format("keyentry with lines lc rgb 'black' lw 2 dt {} title {} noenhanced", dt, quote(text));
-}
-
-// What the row of species 0 holds for quantity y (model/observable_catalogue.cpp).
-std::string row0_label(const std::string& y) {
-  if (y == "T") return "mean ⟨T⟩";
-  if (y == "gamma") return "γ = T_1/T_2";
-  if (y == "gamma_ratio") return "γ(n^*)/γ(0)";
-  if (y == "msd") return "total MSD";
-  return "mixture";
-}
-
-std::string species_label(const model::Scene& s, int k, const std::string& y) {
-  if (k == 0) return row0_label(y);
-  if (k < 1 || std::size_t(k) > s.mixture.size()) return fmt::format("species {}", k);
-  const model::Species& sp = s.mixture[std::size_t(k - 1)];
-  return fmt::format("species {}: m = {:.3g}, σ = {:.3g}", k, sp.mass, sp.diameter);
-}
-
-struct Panel {
-  std::string y, ylabel;
-  bool logy = false;
-  std::vector<std::string> plots, labels;  // plot elements; `set label` commands (the guides' names)
-  std::vector<double> yvalues;             // theory's and DSMC's values drawn (the y range); empty: autoscaled
-  figure::ResidualPanel residual;
-};
+using figure::species_cycle;
 
 // The quantities drawn, one panel each: [plot] y first, then every other quantity the scene asks for that theory.tsv
 // holds (the catalogue's order). A paper scene keeps the paper's single panel.
@@ -121,123 +42,6 @@ std::vector<int> drawn_species(const model::Scene& s, const std::string& y, cons
     if (!figure::column_values(theory, y, {k}).empty()) out.push_back(k);
   }
   return out;
-}
-
-// x = "species": one curve over species at the last sample time (v1 Fig. 8).
-void species_curves(Panel& pn, const model::Table& theory, const model::Table* dsmc, Legend& legend, const std::string& level) {
-  const std::string& y = pn.y;
-  pn.plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}')) with linespoints ls 1 pt 6 ps 0.5 notitle",
-                                 last_block_start(theory), y));
-  legend.species.emplace_back(-1, fmt::format("theory: {}, t = {:g}", level, theory.rows.back()[0]));
-  if (theory.column(y + "_paper") >= 0) {  // the paper level dashed beside the judged level, as the time plots draw it
-    pn.plots.push_back(fmt::format("'theory.tsv' every ::{} using (column('species')):(column('{}_paper')) with lines ls 1 dt 2 notitle",
-                                   last_block_start(theory), y));
-    legend.add_style(black_line(2, "paper level"));
-  }
-  if (dsmc && dsmc->column(y + "_err") >= 0) {
-    pn.plots.push_back(fmt::format("'dsmc.tsv' every ::{} using (column('species')):(column('{}')):{} with yerrorbars ls 2 pt 7 ps 0.6 notitle",
-                                   last_block_start(*dsmc), y, error_bar(y, pn.logy)));
-    legend.add_style("keyentry with yerrorbars ls 2 pt 7 ps 0.6 title 'DSMC ± 1σ'");
-  }
-}
-
-// Theory, its companions drawn beside it, and DSMC, one colour per species.
-void species_rows(Panel& pn, const model::Scene& s, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn,
-                  Legend& legend) {
-  const model::PlotSettings& p = s.plot;
-  const std::string& y = pn.y;
-  const std::vector<int> cycle = species_cycle(theory), dcycle = dsmc ? species_cycle(*dsmc) : std::vector<int>{};
-  legend.add_style(black_line(1, "theory: " + s.theory.level));
-  for (const int k : drawn) {
-    const std::size_t o = std::size_t(std::find(cycle.begin(), cycle.end(), k) - cycle.begin());
-    const int ls = species_style(k);
-    legend.add_species(k, species_label(s, k, y));
-    // Solid (dt 1): the black style 9 of γ and totals is dashed by default, and the paper level beside it is dashed too.
-    pn.plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}')) with lines ls {} dt 1 notitle", cycle.size(), o, p.x, y, ls));
-    // The paper level's curve beside the judged level's (kinetic scenes), and what the DSMC of a
-    // D_k/D_1 sweep measures (MSD increments), so the points are read against the right line.
-    for (const auto& [suffix, dt, what] : {std::tuple{"_paper", 2, "paper level"}, std::tuple{"_increment", 3, "MSD increments"}})
-      if (theory.column(y + suffix) >= 0) {
-        pn.plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}{}')) with lines ls {} dt {} notitle", cycle.size(), o,
-                                       p.x, y, suffix, ls, dt));
-        legend.add_style(black_line(dt, what));
-      }
-    // Dash-dot: the paper level beside it is dashed (MG Figs. 3, 7 draw all three).
-    if (p.maxwell && theory.column(y + "_maxwell") >= 0) {
-      pn.plots.push_back(fmt::format("'theory.tsv' every {}::{} using (column('{}')):(column('{}_maxwell')) with lines ls {} dt 4 notitle", cycle.size(), o,
-                                     p.x, y, ls));
-      legend.add_style(black_line(4, "Maxwell–Boltzmann"));
-    }
-    const auto d = std::find(dcycle.begin(), dcycle.end(), k);
-    if (dsmc && dsmc->column(y + "_err") >= 0 && dsmc->column(p.x) >= 0 && d != dcycle.end()) {
-      pn.plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):{} with yerrorbars ls {} lw 1.2 pt 7 ps 0.6 notitle",
-                                     dcycle.size(), d - dcycle.begin(), p.x, y, error_bar(y, pn.logy), ls));
-      legend.add_style("keyentry with yerrorbars lc rgb 'black' lw 1.2 pt 7 ps 0.6 title 'DSMC ± 1σ'");
-    }
-  }
-}
-
-// Guide slopes, anchored on the last drawn species' curve (t² at its first point, the others at its last) and drawn
-// only over the x range where they stay within the data's x and y ranges, so that they never stretch the axes.
-void guides(Panel& pn, const model::Scene& s, const model::Table& theory, const std::vector<int>& drawn) {
-  if (drawn.empty() || s.plot.slopes.empty()) return;
-  const int xc = theory.column(s.plot.x), yc = theory.column(pn.y), sc = theory.column("species");
-  std::vector<std::vector<double>> curve;
-  for (const auto& row : theory.rows)
-    if (int(row[sc]) == drawn.back() && std::isfinite(row[yc]) && std::isfinite(row[xc])) curve.push_back(row);
-  const std::vector<double> xs = figure::column_values(theory, s.plot.x, drawn), ys = figure::column_values(theory, pn.y, drawn);
-  if (curve.empty() || xs.empty() || ys.empty()) return;
-  const auto [xmin, xmax] = std::minmax_element(xs.begin(), xs.end());
-  const auto [ymin, ymax] = std::minmax_element(ys.begin(), ys.end());
-  const double x0 = curve.front()[xc], y0 = curve.front()[yc], x1 = curve.back()[xc], y1 = curve.back()[yc];
-  for (const std::string& sl : s.plot.slopes) {
-    // g(x) = ya (x/xa)^power, or y1 ln x / ln x1; [lo, hi]: where g lies within [ymin, ymax].
-    double lo = *xmin, hi = *xmax;
-    std::string expr, name;
-    if (sl == "log") {
-      if (!(x1 > 1.0 && y1 > 0.0)) continue;
-      const double l1 = std::log(x1);
-      // From a tenth of its end value on a log axis: towards t = 1 ln t falls to zero, a vertical drop.
-      const double floor = pn.logy ? std::max(*ymin, y1 / 10.0) : *ymin;
-      lo = std::max({lo, 1.0, std::exp(floor * l1 / y1)}), hi = std::min(hi, std::exp(*ymax * l1 / y1));
-      expr = fmt::format("{:.8g}*log(x)/{:.8g}", y1, l1), name = "∝ ln t";
-    } else {
-      const double power = sl == "2" ? 2.0 : sl == "1" ? 1.0 : 1.0 / 6.0;
-      const double xa = sl == "2" ? x0 : x1, ya = sl == "2" ? y0 : y1;
-      if (!(xa > 0.0 && ya > 0.0)) continue;
-      if (*ymin > 0.0) lo = std::max(lo, xa * std::pow(*ymin / ya, 1.0 / power));
-      hi = std::min(hi, xa * std::pow(*ymax / ya, 1.0 / power));
-      expr = fmt::format("{:.8g}*(x/{:.8g})**({})", ya, xa, sl == "1/6" ? "1.0/6" : sl);
-      name = sl == "2" ? "∝ t^2" : sl == "1" ? "∝ t" : "∝ t^{1/6}";
-    }
-    if (!(lo < hi)) continue;
-    pn.plots.push_back(fmt::format("[x={:.8g}:{:.8g}] {} with lines lc rgb 'black' lw 1.5 dt 3 notitle", lo, hi, expr));
-    // The guide's name beside its end: the upper end of a rising line, the lower end of ln t's (drawn from the last point).
-    const double xl = sl == "2" ? hi : lo;
-    const double yl = sl == "log" ? y1 * std::log(xl) / std::log(x1)
-                                  : (sl == "2" ? y0 : y1) * std::pow(xl / (sl == "2" ? x0 : x1), sl == "2" ? 2.0 : sl == "1" ? 1.0 : 1.0 / 6.0);
-    pn.labels.push_back(fmt::format("set label {} at first {:.8g}, first {:.8g} {} offset {} front", quote(name), xl, yl,
-                                    sl == "2" ? "right" : "left", sl == "2" ? "-0.5,0.6" : "0.5,-0.6"));
-  }
-}
-
-// The values a panel's y range holds: the judged level's and DSMC's, and the curves drawn beside them (paper level,
-// MSD increments, Maxwell–Boltzmann) where they stay within a decade (a log axis) or half the range's width of them;
-// beyond, those curves leave the frame instead of squashing the data.
-std::vector<double> y_values(const Panel& pn, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn, bool maxwell) {
-  std::vector<double> v;
-  auto add = [&](const model::Table& t, const std::string& column, double lo, double hi) {
-    for (const double x : figure::column_values(t, column, drawn))
-      if ((!pn.logy || x > 0.0) && x >= lo && x <= hi) v.push_back(x);
-  };
-  add(theory, pn.y, -INFINITY, INFINITY);
-  if (dsmc) add(*dsmc, pn.y, -INFINITY, INFINITY);
-  if (v.empty()) return v;
-  const auto [a, b] = std::minmax_element(v.begin(), v.end());
-  const double lo = pn.logy ? *a / 10.0 : *a - 0.5 * (*b - *a), hi = pn.logy ? *b * 10.0 : *b + 0.5 * (*b - *a);
-  for (const std::string& beside : {pn.y + "_paper", pn.y + "_increment", maxwell ? pn.y + "_maxwell" : std::string()})
-    if (!beside.empty()) add(theory, beside, lo, hi);
-  return v;
 }
 
 // An axis' range: the data's, padded by `pad` of its width (of its decades on a log axis). The x range is the same
@@ -313,10 +117,10 @@ std::string figure_script(const model::Scene& s, const model::Table& theory, con
     const bool own = i == 0;  // [plot] y: its labels and axes as the scene sets them
     pn.ylabel = own && !p.ylabel.empty() ? p.ylabel : model::axis_label(pn.y, s.time_unit_mg);
     pn.logy = own && p.logy ? *p.logy : figure::spans_decades(figure::column_values(theory, pn.y, p.x == "species" ? std::vector<int>{} : drawn));
-    if (p.x == "species") species_curves(pn, theory, dsmc, legend, s.theory.level);
+    if (p.x == "species") figure::species_curves(pn, theory, dsmc, legend, s.theory.level);
     else {
-      species_rows(pn, s, theory, dsmc, drawn, legend), guides(pn, s, theory, drawn);
-      pn.yvalues = y_values(pn, theory, dsmc, drawn, p.maxwell);
+      figure::species_rows(pn, s, theory, dsmc, drawn, legend), figure::guides(pn, s, theory, drawn);
+      pn.yvalues = figure::y_values(pn, theory, dsmc, drawn, p.maxwell);
     }
     if (!deviations.empty()) pn.residual = figure::residual_panel(s, pn.y, deviations, theory, int(i));
     if (pn.plots.empty()) continue;
