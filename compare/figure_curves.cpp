@@ -144,6 +144,13 @@ std::vector<double> y_values(const Panel& pn, const model::Table& theory, const 
   const double lo = pn.logy ? *a / 10.0 : *a - 0.5 * (*b - *a), hi = pn.logy ? *b * 10.0 : *b + 0.5 * (*b - *a);
   for (const std::string& beside : {pn.y + "_paper", pn.y + "_increment", maxwell ? pn.y + "_maxwell" : std::string()})
     if (!beside.empty()) add(theory, beside, lo, hi);
+  // DSMC's error bars, on a linear axis (on a log axis a bar reaching zero stops at a tenth of the value).
+  const int yc = dsmc ? dsmc->column(pn.y) : -1, ec = dsmc ? dsmc->column(pn.y + "_err") : -1, sc = dsmc ? dsmc->column("species") : -1;
+  if (!pn.logy && yc >= 0 && ec >= 0 && sc >= 0)
+    for (const auto& row : dsmc->rows)
+      if (std::find(drawn.begin(), drawn.end(), int(row[sc])) != drawn.end())
+        for (const double x : {row[yc] - row[ec], row[yc] + row[ec]})
+          if (std::isfinite(x) && x >= lo && x <= hi) v.push_back(x);
   return v;
 }
 

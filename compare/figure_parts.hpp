@@ -67,8 +67,8 @@ void species_curves(Panel& pn, const model::Table& theory, const model::Table* d
 void species_rows(Panel& pn, const model::Scene& s, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn,
                   Legend& legend);
 // The values a panel's y range holds: the judged level's and DSMC's, and the curves drawn beside them (paper level,
-// MSD increments, Maxwell–Boltzmann) where they stay within a decade (a log axis) or half the range's width of them;
-// beyond, those curves leave the frame instead of squashing the data.
+// MSD increments, Maxwell–Boltzmann) and DSMC's error bars (a linear axis) where they stay within a decade (a log
+// axis) or half the range's width of them; beyond, they leave the frame instead of squashing the data.
 std::vector<double> y_values(const Panel& pn, const model::Table& theory, const model::Table* dsmc, const std::vector<int>& drawn, bool maxwell);
 // Guide slopes ([plot] slopes), anchored on the last drawn species' curve (t² at its first point, the others at its
 // last) and drawn only over the x range where they stay within the data's x and y ranges, so that they never stretch

@@ -180,11 +180,11 @@ std::string figure_script(const model::Scene& s, const model::Table& theory, con
   gp += "# Draws " + s.name + ".png and " + s.name + ".pdf from theory.tsv, dsmc.tsv and deviations.tsv in this folder: gnuplot " + s.name + ".gp\n";
   gp += "# The style (plots/style.gp of granmix):\n" + std::string(figure_style) + "\n";
   for (const Panel& pn : panels) gp += pn.residual.tables;
-  // One body, two terminals: a multiplot cannot be replotted.
+  // One body, two terminals (a multiplot cannot be replotted); the PDF's thinner lines and smaller symbols read as the PNG's.
   const int px = width_px, py = int(std::lround(rows * 112.0));
   gp += "do for [gm_out in \"png pdf\"] {\n";
   gp += fmt::format("if (gm_out eq \"png\") {{\n  set terminal pngcairo size {},{} enhanced font 'DejaVu Sans,12'\n  set output '{}.png'\n  gm_small = ',10'\n}} else {{\n", px, py, s.name);
-  gp += fmt::format("  set terminal pdfcairo size 7in,{:.2f}in enhanced font 'DejaVu Sans,8.5'\n  set output '{}.pdf'\n  gm_small = ',7'\n}}\n", 7.0 * py / px, s.name);
+  gp += fmt::format("  set terminal pdfcairo size 7in,{:.2f}in enhanced font 'DejaVu Sans,9.5' linewidth 0.8 pointscale 0.8\n  set output '{}.pdf'\n  gm_small = ',7.5'\n}}\n", 7.0 * py / px, s.name);
   gp += body + "}\n";
   return gp;
 }
