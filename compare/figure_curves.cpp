@@ -124,7 +124,7 @@ void species_rows(Panel& pn, const model::Scene& s, const model::Table& theory, 
     }
     const auto d = std::find(dcycle.begin(), dcycle.end(), k);
     if (dsmc && dsmc->column(y + "_err") >= 0 && dsmc->column(p.x) >= 0 && d != dcycle.end()) {
-      pn.plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):{} with yerrorbars ls {} lw 1.2 pt 7 ps 0.6 notitle",
+      pn.plots.push_back(fmt::format("'dsmc.tsv' every {}::{} using (column('{}')):(column('{}')):{} with yerrorbars ls {} dt 1 lw 1.2 pt 7 ps 0.6 notitle",
                                      dcycle.size(), d - dcycle.begin(), p.x, y, error_bar(y, pn.logy), ls));
       legend.add_style("keyentry with yerrorbars lc rgb 'black' lw 1.2 pt 7 ps 0.6 title 'DSMC ± 1σ'");
     }

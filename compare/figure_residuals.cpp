@@ -91,8 +91,8 @@ ResidualPanel residual_panel(const model::Scene& s, const std::string& y, const 
       out.tables += fmt::format("set table {}\nplot 'deviations.tsv' using ({}):(-{}):({}) with table if ({} && column('judged') == 1)\nunset table\n", bnd,
                                 loc.x, band_expression(q), band_expression(q), rows);
       bands.push_back(fmt::format("{} using 1:2:3 with filledcurves ls {} fs transparent solid 0.12 noborder notitle", bnd, style));
-      points.push_back(fmt::format("{} using 1:($4 == 1 ? $2 : NaN):3 with yerrorbars ls {} lw 1.2 pt 7 ps 0.6 notitle", res, style));
-      if (unjudged) points.push_back(fmt::format("{} using 1:($4 == 0 ? $2 : NaN):3 with yerrorbars ls {} lw 1 pt 6 ps 0.6 notitle", res, style));
+      points.push_back(fmt::format("{} using 1:($4 == 1 ? $2 : NaN):3 with yerrorbars ls {} dt 1 lw 1.2 pt 7 ps 0.6 notitle", res, style));
+      if (unjudged) points.push_back(fmt::format("{} using 1:($4 == 0 ? $2 : NaN):3 with yerrorbars ls {} dt 1 lw 1 pt 6 ps 0.6 notitle", res, style));
       if (failed) points.push_back(fmt::format("{} using 1:($4 == 1 && $5 == 0 ? $2 : NaN) with points lc rgb 'black' lw 1.5 pt 2 ps 1.4 notitle", res));
       points.push_back(fmt::format("{0} using 1:($2 > gm_range ? 0.92*gm_range : NaN) with points ls {1} pt 9 ps 1.1 notitle, "
                                    "{0} using 1:($2 < -gm_range ? -0.92*gm_range : NaN) with points ls {1} pt 11 ps 1.1 notitle",
