@@ -155,7 +155,7 @@ SceneOutcome compare_scene(const model::Scene& s, const std::filesystem::path& o
       write_atomically(tmp / "deviations.tsv", format_deviations(provenance_header(pd), e.theory.table.columns.front(), e.deviations));
     }
     interrupts::WriteGuard g;  // figure, report and rename: finished together or not at all
-    o.figure = write_figure(tmp, s, e.theory.table, s.dsmc.present ? &e.dsmc.table : nullptr).message;
+    o.figure = write_figure(tmp, s, e.theory.table, s.dsmc.present ? &e.dsmc.table : nullptr, e.deviations).message;
     write_atomically(tmp / "report.json", report_json(s, o, seed, fidelity).dump(2) + "\n");
     write_scene_html_report(tmp);  // the scene's own page (index.html), from its report.json
     std::filesystem::remove_all(out / s.name);

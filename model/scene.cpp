@@ -441,12 +441,6 @@ void check_companions(const Scene& s, TomlFields& t, const LevelRules& levels) {
     }
 }
 
-// The paper scenes: the files of the folder compare/scenes (and compare/paper-size), whose tolerances must say why.
-bool is_paper_scene(const std::string& path) {
-  const std::filesystem::path p = std::filesystem::path(path).lexically_normal();
-  const std::filesystem::path dir = p.parent_path();
-  return dir.parent_path().filename() == "compare" && (dir.filename() == "scenes" || dir.filename() == "paper-size");
-}
 
 // Whether a companion of the scene's level computes a model error for `quantity` in this scene (check_companions'
 // rules, read as a filter instead of a refusal).
@@ -458,6 +452,13 @@ bool companion_applies(const CompanionRule& c, const Scene& s, const std::string
 }
 
 }  // namespace
+
+// The paper scenes: the files of the folder compare/scenes (and compare/paper-size), whose tolerances must say why.
+bool is_paper_scene(const std::string& path) {
+  const std::filesystem::path p = std::filesystem::path(path).lexically_normal();
+  const std::filesystem::path dir = p.parent_path();
+  return dir.parent_path().filename() == "compare" && (dir.filename() == "scenes" || dir.filename() == "paper-size");
+}
 
 std::vector<CompareQuantity> default_comparison(const Scene& s, const LevelRules& levels) {
   const Observables& o = s.observables;
@@ -500,11 +501,11 @@ PlotSettings read_plot(TomlFields& f) {
   PlotSettings p;
   p.x = f.choice("x", {"t", "t_s", "eps", "density", "n_star", "lag", "v", "species"}, "t");
   p.y = f.choice("y", plotted_quantities(), "msd");
-  p.logx = f.flag("logx", false);
-  p.logy = f.flag("logy", false);
+  if (f.has("logx")) p.logx = f.flag("logx", false);
+  if (f.has("logy")) p.logy = f.flag("logy", false);
   p.maxwell = f.flag("maxwell", false);
-  p.xlabel = f.text("xlabel", p.x);
-  p.ylabel = f.text("ylabel", p.y);
+  p.xlabel = f.text("xlabel", "");
+  p.ylabel = f.text("ylabel", "");
   p.key = f.choice("key", {"top left", "top right", "bottom left", "bottom right"}, "top left");
   if (f.has("species"))
     for (double v : f.numbers("species", 0, 1e7)) p.species.push_back(static_cast<std::size_t>(v));

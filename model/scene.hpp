@@ -108,9 +108,10 @@ struct CompareQuantity {
 
 // [plot]: the figure of the paper (docs/architecture.md §3).
 struct PlotSettings {
-  std::string x = "t", y = "msd", xlabel, ylabel;  // x = "species": the values at the last time
-  std::string key = "top left";  // legend position
-  bool logx = false, logy = false;
+  std::string x = "t", y = "msd";  // x = "species": the values at the last time
+  std::string xlabel, ylabel;      // empty: the catalogue's label with units (model::axis_label)
+  std::string key = "top left";  // where the legend sits in the figure's right margin: its top or bottom
+  std::optional<bool> logx, logy;  // unset: logarithmic where the data span more than two decades
   bool maxwell = false;  // also draw theory's `<y>_maxwell` column dashed (MG Fig. 7's Maxwell–Boltzmann lines)
   std::vector<std::size_t> species;  // curves drawn (0 = the total row); empty: every species
   std::vector<std::string> slopes;  // guide lines: "2", "1", "1/6", "log"
@@ -145,6 +146,10 @@ Scene load_scene_text(const std::string& text, const std::string& path, const Le
 // quantity it asks for that DSMC measures, z = 4, model error from every companion its level has for that quantity in
 // this scene (fixed relative 0.05 where there is none), a generated `why` saying so.
 std::vector<CompareQuantity> default_comparison(const Scene& scene, const LevelRules& levels);
+
+// The paper scenes: the files of the folder compare/scenes (and compare/paper-size), whose tolerances must say why
+// and whose figures keep the paper's single panel.
+bool is_paper_scene(const std::string& path);
 
 // The scene at one value x of its sweep (mixture, restitution, Enskog as the parameter says), sweep removed.
 Scene sweep_point(const Scene& scene, double x);
