@@ -216,8 +216,6 @@ Observables read_observables(TomlFields& f) {
   return o;
 }
 
-bool is_paper_scene(const std::string& path);
-
 // A scene that names no level: the papers' own scenes keep the catalogue's default; a user's scene gets "auto", the
 // cheapest level whose computed model error meets [theory] auto_target (docs/levels.md, "Choosing a level").
 std::string default_level(const LevelRules& levels, const std::string& path) {
