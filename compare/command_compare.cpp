@@ -1,5 +1,5 @@
 // granmix compare SCENE.toml [--out DIR] [--fidelity quick|paper] [--seed S] [--threads N]
-// granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S] [--threads N] (also DIR/index.html)
+// granmix validate [--fidelity quick|paper] [--out DIR] [--scenes DIR] [--seed S | --seeds A-B] [--threads N] (also DIR/index.html)
 // Both also [--checkpoint DIR | --restart DIR] [--checkpoint-every SECONDS] (checkpoint_options.hpp).
 // (docs/architecture.md §3). Exit 0 if every compared quantity passes, 1 otherwise, 2 for bad input.
 #include <algorithm>
@@ -14,6 +14,9 @@
 #include "scene_compare.hpp"
 #include "scheduler.hpp"
 #include "summary_table.hpp"
+#include "calibration.hpp"
+#include "provenance.hpp"
+#include "tsv_writer.hpp"
 #include "theory/level_choice.hpp"
 #include "theory/scene_theory.hpp"
 
@@ -76,66 +79,105 @@ std::function<int()> add_compare_command(CLI::App& app) {
   };
 }
 
+namespace {
+
+// One validation of every scene of `dir` at `seed` into `out`: every scene loaded and its DSMC planned first, so that
+// all replicas of all scenes are one pool of units for the scheduler (threads and MPI ranks); one broken scene fails
+// the run but not the others. Writes summary.tsv, summary.json and index.html; on a worker rank, nothing.
+SeedRun validate_once(RunOptions& o, const std::filesystem::path& dir, const std::filesystem::path& out, std::uint64_t seed) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  o.seed = seed;
+  SeedRun run;
+  run.seed = seed;
+  std::vector<model::Scene> scenes;
+  std::vector<dsmc::DsmcSetup> setups;
+  auto report_error = [&](const std::filesystem::path& f, const std::exception& e) {
+    run.errors.push_back(f.filename().string() + ": " + e.what());
+    if (scheduler::root()) std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
+  };
+  for (const auto& f : files) {
+    try {
+      model::Scene s = theory::with_level_chosen(theory::load_scene(f.string()));
+      require_dsmc_for_compare(s);
+      for (auto& d : dsmc::plan_scene_dsmc(s, run_options(o))) setups.push_back(std::move(d));
+      scenes.push_back(std::move(s));
+    } catch (const std::exception& e) {
+      report_error(f, e);
+    }
+  }
+  o.checkpointing = start_checkpointing(o.checkpoint, setups);
+  const scheduler::GatheredReplicas replicas = scheduler::run_units(setups, o.threads);
+  if (!scheduler::root()) return run;  // rank 0 writes every file
+  dsmc::RunOptions opt = run_options(o);
+  opt.source = &replicas;
+  std::printf("%s", summary_header().c_str());
+  for (const auto& s : scenes) {
+    try {
+      run.scenes.push_back(compare_scene(s, out, opt));
+      std::printf("%s", summary_lines(run.scenes.back()).c_str());
+    } catch (const std::exception& e) {
+      report_error(s.file, e);
+    }
+    std::fflush(stdout);
+    interrupts::set_finished(std::to_string(run.scenes.size()) + " of " + std::to_string(files.size()) + " scenes written to " + out.string() +
+                             "/, no summary");
+  }
+  {
+    interrupts::WriteGuard g;  // summary.tsv, summary.json and index.html together
+    write_summary(out, run.scenes, run.errors, replicas);
+    write_html_report(out);
+  }
+  return run;
+}
+
+bool passed(const SeedRun& run) {
+  return run.errors.empty() && std::all_of(run.scenes.begin(), run.scenes.end(), [](const auto& s) { return s.pass; });
+}
+
+}  // namespace
+
 std::function<int()> add_validate_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand("validate", "every scene: compare, then summary.tsv and summary.json");
   auto o = std::make_shared<RunOptions>();
+  auto seeds = std::make_shared<std::string>();
   add_run_options(cmd, *o);
   cmd->add_option("--scenes", o->scenes, "scene folder (default compare/scenes)");
-  return [o]() {
+  cmd->add_option("--seeds", *seeds,
+                  "A-B: held-out calibration, the suite at each seed into DIR/seed-S/, then DIR/calibration.tsv and .json "
+                  "(docs/validation.md, \"Held-out calibration\")")
+      ->excludes(cmd->get_option("--seed"));
+  return [o, seeds]() {
     interrupts::install();
     interrupts::require_writable_folder(o->out);
     const std::filesystem::path dir = o->scenes.empty() ? default_scene_folder() : std::filesystem::path(o->scenes);
     if (!std::filesystem::is_directory(dir)) throw InputError("validate: no scene folder " + dir.string() + " (allowed: a folder of *.toml)");
-    std::vector<std::filesystem::path> files;
-    for (const auto& e : std::filesystem::directory_iterator(dir))
-      if (e.path().extension() == ".toml") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    // Every scene loaded and its DSMC planned first, so that all replicas of all scenes are one pool of
-    // units for the scheduler (threads and MPI ranks); one broken scene fails the run but not the others.
-    std::vector<model::Scene> scenes;
-    std::vector<std::string> errors;
-    std::vector<dsmc::DsmcSetup> setups;
-    auto report_error = [&](const std::filesystem::path& f, const std::exception& e) {
-      errors.push_back(f.filename().string() + ": " + e.what());
-      if (scheduler::root()) std::printf("%-24s ERROR %s\n", f.stem().c_str(), e.what());
-    };
-    for (const auto& f : files) {
-      try {
-        model::Scene s = theory::with_level_chosen(theory::load_scene(f.string()));
-        require_dsmc_for_compare(s);
-        for (auto& d : dsmc::plan_scene_dsmc(s, run_options(*o))) setups.push_back(std::move(d));
-        scenes.push_back(std::move(s));
-      } catch (const std::exception& e) {
-        report_error(f, e);
-      }
+    if (seeds->empty()) {
+      const SeedRun run = validate_once(*o, dir, o->out, o->seed);
+      if (!scheduler::root()) return 0;
+      const bool pass = passed(run);
+      std::printf("validate (%s): %zu scenes, %s -> %s/summary.tsv, summary.json\n", o->fidelity.c_str(), run.scenes.size() + run.errors.size(),
+                  pass ? "all pass" : "FAILURES", o->out.c_str());
+      return pass ? 0 : 1;
     }
-    o->checkpointing = start_checkpointing(o->checkpoint, setups);
-    const scheduler::GatheredReplicas replicas = scheduler::run_units(setups, o->threads);
-    if (!scheduler::root()) return 0;  // rank 0 writes every file
-    dsmc::RunOptions run = run_options(*o);
-    run.source = &replicas;
-    std::vector<SceneOutcome> all;
-    std::printf("%s", summary_header().c_str());
-    for (const auto& s : scenes) {
-      try {
-        all.push_back(compare_scene(s, o->out, run));
-        std::printf("%s", summary_lines(all.back()).c_str());
-      } catch (const std::exception& e) {
-        report_error(s.file, e);
-      }
-      std::fflush(stdout);
-      interrupts::set_finished(std::to_string(all.size()) + " of " + std::to_string(files.size()) + " scenes written to " + o->out +
-                               "/, no summary");
+    const std::vector<std::uint64_t> list = parse_seed_range(*seeds);
+    if (!o->checkpoint.checkpoint.empty() || !o->checkpoint.restart.empty()) throw InputError("--seeds: checkpoints belong to one run (allowed: --seeds without --checkpoint/--restart)");
+    std::vector<SeedRun> runs;
+    for (const std::uint64_t seed : list) {
+      if (scheduler::root()) std::printf("validate --seeds: seed %llu (%zu of %zu)\n", static_cast<unsigned long long>(seed), runs.size() + 1, list.size());
+      runs.push_back(validate_once(*o, dir, std::filesystem::path(o->out) / ("seed-" + std::to_string(seed)), seed));
     }
-    {
-      interrupts::WriteGuard g;  // summary.tsv, summary.json and index.html together
-      write_summary(o->out, all, errors, replicas);
-      write_html_report(o->out);
-    }
-    const bool pass = errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& s) { return s.pass; });
-    std::printf("validate (%s): %zu scenes, %s -> %s/summary.tsv, summary.json\n", o->fidelity.c_str(), files.size(),
-                pass ? "all pass" : "FAILURES", o->out.c_str());
-    return pass ? 0 : 1;
+    if (!scheduler::root()) return 0;
+    const std::vector<CalibrationRow> rows = calibrate(runs);
+    Provenance p;
+    p.scene_name = "calibration", p.scene_file = dir.string(), p.scene_sha256 = "-", p.command = command_line();
+    p.seed = *seeds, p.fidelity = o->fidelity;
+    write_atomically(std::filesystem::path(o->out) / "calibration.tsv", provenance_header(p) + calibration_tsv(rows));
+    write_atomically(std::filesystem::path(o->out) / "calibration.json", calibration_json(runs, rows).dump(2) + "\n");
+    std::printf("%s-> %s/calibration.tsv, calibration.json\n", calibration_summary(runs, rows).c_str(), o->out.c_str());
+    return std::all_of(rows.begin(), rows.end(), [](const CalibrationRow& r) { return r.consistent(); }) ? 0 : 1;
   };
 }
 

@@ -86,7 +86,10 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
         d.z = NAN, d.judged = false, d.pass = false;
       } else {
         d.z = err > 0.0 ? diff / err : (diff == 0.0 ? 0.0 : INFINITY);
-        d.pass = d.resolved && (std::abs(diff) <= d.model_error * std::abs(d.theory) + q.z * err || std::abs(diff) <= q.absolute);
+        const double bound = d.model_error * std::abs(d.theory) + q.z * err;
+        d.pass = d.resolved && (std::abs(diff) <= bound || std::abs(diff) <= q.absolute);
+        d.bound_ratio = bound > 0.0 ? std::abs(diff) / bound : (diff == 0.0 ? 0.0 : INFINITY);
+        if (q.absolute > 0.0) d.bound_ratio = std::min(d.bound_ratio, std::abs(diff) / q.absolute);
       }
       d.paper_rel = paper >= 0 ? (d.dsmc - row[paper]) / std::abs(row[paper]) : NAN;
       out.push_back(d);
@@ -106,6 +109,7 @@ std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std
       if (!x.judged) continue;
       ++r.judged;
       if (!x.pass) ++r.failed;
+      r.bound_ratios.push_back(x.bound_ratio);
       if (!x.resolved) ++r.unresolved;
       r.max_rel = std::max(r.max_rel, std::abs(x.rel));
       r.max_z = std::max(r.max_z, std::abs(x.z));

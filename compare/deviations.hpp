@@ -29,6 +29,9 @@ struct Deviation {
   double paper_rel = 0.0;  // (dsmc − paper level)/|paper level|; NaN without a paper column
   double model_error = 0.0;  // the relative tolerance applied at this point (relative + computed correction)
   bool resolved = true;      // model_error within the quantity's model_error_max (a point beyond fails)
+  // |dsmc − theory| over the bound model_error·|theory| + z·σ (the smaller with |dsmc − theory|/absolute when an
+  // absolute tolerance is set): at most 1 where the point passes on its bound; NaN without an error bar.
+  double bound_ratio = NAN;
 };
 
 struct QuantityResult {
@@ -39,6 +42,7 @@ struct QuantityResult {
   double max_paper_rel = NAN;         // the paper level's largest |rel| over the same points (NaN: none)
   double max_model_error = 0.0;       // largest relative tolerance applied (relative + correction)
   std::string not_judged;             // why no point was judged (no error bar: 1 replica); empty when judged
+  std::vector<double> bound_ratios;   // the judged points' bound_ratio (granmix validate --seeds: calibration)
   bool pass() const { return failed == 0 && judged > 0; }
 };
 

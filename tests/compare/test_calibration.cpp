@@ -1,0 +1,113 @@
+// granmix validate --seeds (compare/calibration.hpp, docs/validation.md "Held-out calibration"): the chance a point
+// falls outside z·σ, the count a quantity may fail by chance, and the command's files.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "compare/calibration.hpp"
+#include "model/errors.hpp"
+#include "run_cli.hpp"
+
+using namespace granmix;
+using namespace granmix::compare;
+
+namespace {
+
+// P(|t_ν| > z) by Simpson's rule on the density of Student's t (an independent evaluation of Boost's cdf).
+double student_tail(double nu, double z) {
+  const double c = std::tgamma((nu + 1) / 2) / (std::sqrt(nu * M_PI) * std::tgamma(nu / 2));
+  auto f = [&](double x) { return c * std::pow(1 + x * x / nu, -(nu + 1) / 2); };
+  const int n = 200000;
+  const double h = z / n;
+  double s = f(0) + f(z);
+  for (int i = 1; i < n; ++i) s += (i % 2 ? 4 : 2) * f(i * h);
+  return 1.0 - 2.0 * s * h / 3.0;
+}
+
+SceneOutcome outcome(std::size_t replicas, std::size_t judged, std::size_t failed) {
+  SceneOutcome o;
+  o.scene = "toy", o.replicas = replicas;
+  QuantityResult q{};
+  q.spec.name = "T", q.spec.z = 4.0;
+  q.judged = q.points = judged, q.failed = failed;
+  for (std::size_t i = 0; i < judged; ++i) q.bound_ratios.push_back(i < failed ? 1.5 : 0.5 * double(i) / double(judged));
+  o.quantities.push_back(q);
+  return o;
+}
+
+}  // namespace
+
+TEST_CASE("calibration: a point's chance outside z = 4 is Student's two-sided tail with R - 1 degrees of freedom", "[compare]") {
+  for (std::size_t r : {4, 8, 16, 32}) {
+    const std::vector<CalibrationRow> rows = calibrate({{.seed = 101, .scenes = {outcome(r, 100, 0)}}});
+    REQUIRE(rows.size() == 1);
+    INFO(r << " replicas");
+    CHECK(rows[0].chance == Approx(student_tail(double(r - 1), 4.0)).epsilon(1e-6));
+  }
+}
+
+TEST_CASE("calibration: failures within the chance the bound allows are consistent, beyond it TOO MANY", "[compare]") {
+  // 16 replicas, z = 4: chance 1.16e-3; 200 points over two seeds expect 0.23 by chance, and the 99.9% Poisson
+  // quantile of 0.23 is 3 (P(N > 3) = 1.1e-4 < 1e-3 <= P(N > 2) = 1.8e-3).
+  const std::vector<SeedRun> ok = {{.seed = 101, .scenes = {outcome(16, 100, 1)}}, {.seed = 102, .scenes = {outcome(16, 100, 0)}}};
+  const std::vector<CalibrationRow> a = calibrate(ok);
+  CHECK(a[0].seeds == 2);
+  CHECK(a[0].seeds_failed == 1);
+  CHECK(a[0].points == 200);
+  CHECK(a[0].outside == 1);
+  CHECK(a[0].allowed == 3.0);
+  CHECK(a[0].consistent());
+  CHECK(a[0].ratio_max == 1.5);
+  const std::vector<CalibrationRow> b = calibrate({{.seed = 101, .scenes = {outcome(16, 100, 4)}}, {.seed = 102, .scenes = {outcome(16, 100, 0)}}});
+  CHECK_FALSE(b[0].consistent());
+  CHECK(calibration_summary({}, b).find("TOO MANY") != std::string::npos);
+}
+
+TEST_CASE("calibration: --seeds takes A-B or A within [0, 2^53] - anything else exit 2 naming it", "[compare]") {
+  CHECK(parse_seed_range("101-103") == std::vector<std::uint64_t>{101, 102, 103});
+  CHECK(parse_seed_range("7") == std::vector<std::uint64_t>{7});
+  for (const char* bad : {"3-1", "x", "1-", "-4", "0-5000", "9007199254740993"}) CHECK_THROWS_AS(parse_seed_range(bad), InputError);
+}
+
+TEST_CASE("calibration: validate --seeds runs the suite at each seed and writes calibration.tsv and .json", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("calibration");
+  std::filesystem::create_directories(d / "scenes");
+  test::write_file(d / "scenes" / "own.toml", R"([scene]
+name = "own"
+[mixture]
+species = [{ mass = 1, diameter = 1, density = 0.05 }, { mass = 4, diameter = 1.3, density = 0.05 }]
+[collisions]
+restitution = 0.8
+[time]
+end = 2
+points = 4
+spacing = "linear"
+[observables]
+temperatures = true
+[theory]
+level = "kinetic"
+[dsmc]
+quick = { particles = 400, replicas = 8 }
+)");
+  const auto r = test::run_granmix("validate --seeds 101-102 --scenes " + (d / "scenes").string() + " --out " + (d / "out").string());
+  INFO(r.output);
+  CHECK(r.code <= 1);
+  CHECK(std::filesystem::exists(d / "out" / "seed-101" / "own" / "dsmc.tsv"));
+  CHECK(std::filesystem::exists(d / "out" / "seed-102" / "summary.json"));
+  std::ifstream in(d / "out" / "calibration.json");
+  const auto j = nlohmann::json::parse(in);
+  REQUIRE(j["quantities"].size() == 1);
+  CHECK(j["quantities"][0]["seeds"] == 2);
+  CHECK(j["seeds"][1]["seed"] == 102);
+  std::ifstream t(d / "out" / "calibration.tsv");
+  std::stringstream text;
+  text << t.rdbuf();
+  CHECK(text.str().find("# seed: 101-102") != std::string::npos);
+  CHECK(text.str().find("scene\tquantity\treplicas\tz\tseeds") != std::string::npos);
+  CHECK(r.output.find("calibration: 2 seeds, 1 quantities") != std::string::npos);
+  const auto both = test::run_granmix("validate --seeds 1-2 --seed 3 --out " + (d / "both").string());
+  CHECK(both.code == 2);
+}
