@@ -7,6 +7,7 @@
 #include <filesystem>
 
 #include "checkpoint_options.hpp"
+#include "frozen_model_errors.hpp"
 #include "commands.hpp"
 #include "interrupts.hpp"
 #include "html_report.hpp"
@@ -66,6 +67,7 @@ std::function<int()> add_compare_command(CLI::App& app) {
     const model::Scene s = theory::with_level_chosen(theory::load_scene(*scene));
     if (!s.theory.level_choice.empty() && scheduler::root()) std::printf("level: %s\n", s.theory.level_choice.c_str()), std::fflush(stdout);
     require_dsmc_for_compare(s);
+    load_frozen_model_errors(s);  // a scene of compare/scenes/ without its reviewed bounds is refused before the DSMC
     std::vector<dsmc::DsmcSetup> plan = dsmc::plan_scene_dsmc(s, run_options(*o));
     o->checkpointing = start_checkpointing(o->checkpoint, plan);
     const scheduler::GatheredReplicas replicas = scheduler::run_units(plan, o->threads);
@@ -102,6 +104,7 @@ SeedRun validate_once(RunOptions& o, const std::filesystem::path& dir, const std
     try {
       model::Scene s = theory::with_level_chosen(theory::load_scene(f.string()));
       require_dsmc_for_compare(s);
+      load_frozen_model_errors(s);
       for (auto& d : dsmc::plan_scene_dsmc(s, run_options(o))) setups.push_back(std::move(d));
       scenes.push_back(std::move(s));
     } catch (const std::exception& e) {

@@ -29,5 +29,6 @@ std::function<int()> add_validate_command(CLI::App& app);
 std::function<int()> add_bench_command(CLI::App& app);
 std::function<int()> add_levels_command(CLI::App& app);
 std::function<int()> add_observables_command(CLI::App& app);
+std::function<int()> add_model_errors_command(CLI::App& app);
 
 }  // namespace granmix::compare

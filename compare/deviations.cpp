@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "frozen_model_errors.hpp"
+#include "model/errors.hpp"
 #include "model/model_error.hpp"
 
 namespace granmix::compare {
@@ -53,7 +55,7 @@ nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q) {
 }
 
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
-                                  const std::vector<model::CompareQuantity>& quantities) {
+                                  const std::vector<model::CompareQuantity>& quantities, const FrozenModelErrors* frozen) {
   std::vector<Deviation> out;
   // Rows are located by the first column of the theory table: t, or the swept value, or v*.
   if (theory.columns.empty()) return out;
@@ -81,6 +83,14 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       // a rounding difference 10¹⁰ standard errors. An unknown error (NaN: one replica) gives no z and no verdict.
       const double err = std::max(d.dsmc_err, error_floor * std::max(std::abs(d.dsmc), std::abs(d.theory)));
       d.model_error = model_error.at(row);
+      if (frozen && (!q.correction_from.empty() || !q.error_column.empty())) {  // the reviewed bound, not the live one
+        const std::optional<double> f = frozen->at(d.quantity, species, t);
+        if (!f)
+          throw InputError(fmt::format("frozen model errors: no point {} species {} at x = {:g} (allowed: a table of this theory: "
+                                       "build/granmix model-errors --write, after review)",
+                                       d.quantity, species, t));
+        d.model_error = *f;
+      }
       d.resolved = d.model_error <= q.model_error_max;
       if (std::isnan(d.dsmc_err)) {
         d.z = NAN, d.judged = false, d.pass = false;

@@ -53,8 +53,11 @@ std::string label(const model::CompareQuantity& q);
 std::string tolerance_text(const model::CompareQuantity& q);
 nlohmann::ordered_json tolerance_json(const model::CompareQuantity& q);
 
+class FrozenModelErrors;
+// frozen: the scene's committed model errors (frozen_model_errors.hpp), used instead of the live computation for every
+// quantity with computed parts; null: the live computation (a user's scene).
 std::vector<Deviation> deviations(const model::Table& theory, const model::Table& dsmc,
-                                  const std::vector<model::CompareQuantity>& quantities);
+                                  const std::vector<model::CompareQuantity>& quantities, const FrozenModelErrors* frozen = nullptr);
 std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std::vector<model::CompareQuantity>& quantities);
 // deviations.tsv: provenance, then x species quantity theory dsmc dsmc_err rel z judged pass, where x is
 // the location column of the theory table (t; eps, density, n_star for a sweep; v for a distribution).

@@ -31,6 +31,7 @@ int main(int argc, char** argv) {
   actions["bench"] = compare::add_bench_command(app);
   actions["levels"] = compare::add_levels_command(app);
   actions["observables"] = compare::add_observables_command(app);
+  actions["model-errors"] = compare::add_model_errors_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -8,6 +8,7 @@
 
 #include "commands.hpp"
 #include "dsmc/scene_dsmc.hpp"
+#include "frozen_model_errors.hpp"
 #include "gnuplot_figure.hpp"
 #include "html_report.hpp"
 #include "provenance.hpp"
@@ -58,7 +59,8 @@ SceneEvaluation evaluate_scene(const model::Scene& s, const dsmc::RunOptions& op
   o.compared = !s.compare.empty() && s.dsmc.present;
   o.pass = true;
   if (o.compared) {
-    e.deviations = deviations(e.theory.table, e.dsmc.table, s.compare);
+    const std::optional<FrozenModelErrors> frozen = load_frozen_model_errors(s);  // compare/scenes/: the reviewed bounds
+    e.deviations = deviations(e.theory.table, e.dsmc.table, s.compare, frozen ? &*frozen : nullptr);
     o.quantities = summarise(e.deviations, s.compare);
     for (auto& q : o.quantities) {
       o.pass = o.pass && q.pass();

@@ -180,14 +180,19 @@ Done run_unit(const std::vector<dsmc::DsmcSetup>& setups, const std::vector<Unit
   return d;
 }
 
-// One line on stderr, rewritten in place at most once a second on a terminal, every 10% of the estimated work
-// otherwise. The work done counts the replicas in flight too (their collisions so far, dsmc/progress_counter.hpp), so a
+// One line on stderr, rewritten in place at most once a second on a terminal; off a terminal (a log, a pipe) none,
+// unless GRANMIX_PROGRESS=1 asks for a line every 10% of the estimated work (GRANMIX_PROGRESS=0: none on a terminal
+// either). The work done counts the replicas in flight too (their collisions so far, dsmc/progress_counter.hpp), so a
 // run of one long replica moves before it ends; the time left scales the elapsed time by the estimated work left
 // (dsmc/unit_cost.hpp: the units' costs are expected collisions).
 class Progress {
  public:
-  Progress(double total_cost, std::size_t units) : total_(total_cost), units_(units), tty_(isatty(STDERR_FILENO)) {}
+  Progress(double total_cost, std::size_t units) : total_(total_cost), units_(units), tty_(isatty(STDERR_FILENO)) {
+    const char* asked = std::getenv("GRANMIX_PROGRESS");
+    shown_ = asked ? std::string(asked) != "0" : tty_;
+  }
   void update(std::size_t done, double done_cost, double collisions, double elapsed) {
+    if (!shown_) return;
     const double running = std::max<double>(0.0, double(dsmc::in_flight_collisions().total()));
     const double f = total_ > 0 ? std::min(1.0, (done_cost + running) / total_) : 1.0;
     if (!tty_ && f < next_ && done < units_) return;
@@ -202,7 +207,7 @@ class Progress {
  private:
   double total_;
   std::size_t units_;
-  bool tty_;
+  bool tty_, shown_;
   double last_ = -1.0, next_ = 0.1;
 };
 

@@ -401,7 +401,7 @@ TEST_CASE("own mixture: a judged quantity the scene does not measure, or whose r
   CHECK(!std::filesystem::exists(late.dir / "out"));
 }
 
-TEST_CASE("progress: one long replica reports its share of the collisions while it runs, on a terminal", "[compare][dsmc]") {
+TEST_CASE("progress: one long replica reports its share of the collisions while it runs on a terminal, and a pipe gets none unless asked", "[compare][dsmc]") {
   if (std::system("command -v script > /dev/null 2>&1") != 0) {
     WARN("no `script` (util-linux) to give the run a terminal: skipped");
     return;
@@ -425,4 +425,15 @@ TEST_CASE("progress: one long replica reports its share of the collisions while 
   }
   CHECK(in_flight);
   CHECK(own_has(out, "DSMC: 1/1 units, 100% of the estimated collisions"));
+  // off a terminal (here a pipe) the run is quiet unless GRANMIX_PROGRESS=1 asks
+  const std::string small = " dsmc " + (d / "small.toml").string() + " --out " + (d / "out2").string();
+  test::write_file(d / "small.toml", own_small);
+  CHECK(!own_has(test::run_granmix(small).output, "of the estimated collisions"));
+  const std::string asked = "GRANMIX_PROGRESS=1 " + std::string(GRANMIX_EXE) + small + " 2>&1";
+  FILE* q = popen(asked.c_str(), "r");
+  REQUIRE(q != nullptr);
+  std::string lines;
+  for (int ch; (ch = std::fgetc(q)) != EOF;) lines += char(ch);
+  CHECK(pclose(q) == 0);
+  CHECK(own_has(lines, "DSMC: 8/8 units, 100% of the estimated collisions"));
 }
