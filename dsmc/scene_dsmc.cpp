@@ -11,7 +11,6 @@
 #include "model/sha256.hpp"
 #include "theory/histories/initial_state.hpp"
 #include "theory/scene_theory.hpp"
-#include "theory/levels/level_catalogue.hpp"
 
 namespace granmix::dsmc {
 
@@ -194,9 +193,8 @@ DsmcSetup scene_setup(const model::Scene& s, const RunOptions& opt) {
   if (d.aged) {
     d.T0.assign(s.mixture.size(), s.initial.T_hot);
   } else if (s.theory.tracer) {
-    // Tracer scenes: start where the judged level's tracer theory starts (gas T1 = 1, intruders at its θ), not
-    // at the settled state of the finite mixture, whose ⟨T⟩ = 1 normalisation would cool the gas by n2 θ / n1.
-    d.T0 = {1.0, theory::make_theory_level(s.theory.level)->tracer(rates).theta};
+    // Tracer scenes: the gas at T₁ = 1, the intruders at the scene's start ratio, never a number of the judged level.
+    d.T0 = {1.0, theory::tracer_start_theta(s.initial, rates)};
   } else {
     d.T0 = theory::initial_temperatures(s.initial, rates);
   }

@@ -245,7 +245,7 @@ Table time_table(const model::Scene& s, const std::vector<Sample>& samples) {
 // Tracer limit in the level's closure (tracer_form.hpp): the MSD and the TAMSD from the same velocity correlation.
 std::vector<Sample> tracer_samples(const model::Scene& s, const CollisionRates& rates, const TheoryLevel& level) {
   const double t_end = std::max(s.times.back(), s.observables.tamsd ? s.observables.tamsd_measurement_time : 0.0);
-  const std::unique_ptr<TracerForm> form = level.tracer_form(rates, t_end);
+  const std::unique_ptr<TracerForm> form = level.tracer_form(rates, tracer_start_theta(s.initial, rates), t_end);
   std::vector<Sample> out;
   for (double t : s.times) {
     Sample x;

@@ -198,7 +198,7 @@ TEST_CASE("intruder relaxation: in the tracer limit it settles on the stationary
 
 TEST_CASE("intruder relaxation: v2 Fig. 5 from the converged start, converged in its steps and grid, its mutual collisions", "[theory]") {
   // From a Maxwellian at the converged stationary θ (579.74, with the heating) the intruder's shape forms first (θ dips to
-  // ~510 at t ~ 15, DSMC 517 ± 5) and θ settles over thousands (DSMC 573 ± 4 at t = 8e3;
+  // ~510 at t ~ 15) and θ settles over thousands (DSMC 573.5 ± 4.1 at t = 8e3;
   // docs/levels.md, "v2 Fig. 5's intruder"). Recorded here: the same with steps 4× shorter moves θ by < 1e-5 (measured 4e-6), 12
   // knots per width or 6 collision points by < 2e-6. The mutual collisions (ν₂₂ = 1.8e-3 against κ = ν − ζ/2 ≈ 7e-4)
   // lower θ by ~1% at t = 8e3 and raise the velocity's decay; the l = 1 MSD then falls by ~5% (below).
@@ -212,21 +212,31 @@ TEST_CASE("intruder relaxation: v2 Fig. 5 from the converged start, converged in
   std::printf("v2 Fig. 5 relaxing from %.2f: theta(15) %.2f, theta(8e3) %.2f (without mutual collisions %.2f); MSD at the end %.5g (without %.5g)\n",
               start.theta, dip, late, late_alone, with.msd_start.back(), without.msd_start.back());
   CHECK(dip < 0.9 * start.theta);
-  CHECK(late == Approx(571.3).epsilon(2e-3));
+  CHECK(std::abs(late - 573.5) < 2.0 * 4.1);  // DSMC (quick, 32 replicas) 573.5 ± 4.1 at t = 8e3 (docs/levels.md)
   CHECK(late_alone / late - 1.0 > 0.008);
   CHECK(without.msd_start.back() / with.msd_start.back() - 1.0 > 0.03);
 }
 
-TEST_CASE("kinetic-converged tracer form: it starts where DSMC does, at the level's tracer theta, reshaped or not", "[theory]") {
-  // DSMC starts the intruders at TheoryLevel::tracer's θ (dsmc/scene_dsmc.cpp); the relaxing form must start there too,
-  // Maxwellian (ballistic MSD 3θ/m₂ t², T₁ = 1), whichever companion computes it (the form solves the converged
-  // intruder once and passes it on: a θ differing between the two would shift every early point of v2 Fig. 5).
+TEST_CASE("intruder relaxation: v2 Fig. 5's converged stationary theta and theta(8e3) from it (regression pins)", "[theory][regression]") {
+  // The code's own numbers, pinned tighter than any independent reference resolves them (DSMC: 573.5 ± 4.1 at t = 8e3, the
+  // Monte Carlo's self-consistent stationary θ 580.0 ± 0.6; both checked above and in test_tracer_temperature.cpp): a
+  // change of either is a change of the solver, to be explained before the pin moves.
+  const CollisionRates r = fig05_pair();
+  const TracerTemperature start = converged_intruder_temperature(r, converged_tracer_temperature(r));
+  CHECK(start.theta == Approx(579.74).epsilon(1e-4));
+  CHECK(make_theory_level("kinetic-converged")->tracer(r).theta == start.theta);
+  CHECK(theta_at(relax_intruder(r, start.theta, 8e3), 8e3) == Approx(571.3).epsilon(2e-3));
+}
+
+TEST_CASE("kinetic-converged tracer form: it starts at the theta it is given, reshaped or not", "[theory]") {
+  // DSMC and the relaxing form start the intruders at the scene's θ₀ (tracer_start_theta; tests/compare/test_shared_start.cpp);
+  // the form must start there, Maxwellian (ballistic MSD 3θ₀/m₂ t², T₁ = 1), whichever companion computes it: a θ₀
+  // differing between the two would shift every early point of v2 Fig. 5. Here θ₀ is the level's own stationary θ.
   const CollisionRates r = fig05_pair();
   for (const char* name : {"kinetic-converged", "kinetic-converged-reshaped"}) {
     const auto level = make_theory_level(name);
     const double theta = level->tracer(r).theta;
-    CHECK(theta == Approx(579.74).epsilon(1e-4));
-    const std::unique_ptr<TracerForm> form = level->tracer_form(r, 10.0);
+    const std::unique_ptr<TracerForm> form = level->tracer_form(r, theta, 10.0);
     const double t = 1e-4, m2 = r.mixture()[1].mass;
     const std::array<double, 2> T = form->temperatures(t);
     CHECK(T[0] == Approx(1.0).epsilon(1e-4));

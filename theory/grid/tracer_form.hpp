@@ -1,9 +1,10 @@
 #pragma once
 // What a theory level says about the tracer limit in time (scene `tracer = true`, docs/physics.md §4): species 0 the gas,
-// 1 the intruder (n₂ → 0), T₁(0) = 1, the intruder starting at the level's θ (TheoryLevel::tracer, DSMC's start).
-//   closed_tracer_form     θ and the memories settled from the start: every curve in closed form (msd.hpp, tamsd.hpp);
-//                          the paper and kinetic levels.
-//   relaxing_tracer_form   the intruder's temperature and velocity memory relaxing from a Maxwellian start on the
+// 1 the intruder (n₂ → 0), T₁(0) = 1.
+//   closed_tracer_form     the intruder at the level's own θ (TheoryLevel::tracer), θ and the memories settled from the
+//                          start: every curve in closed form (msd.hpp, tamsd.hpp); the paper and kinetic levels.
+//   relaxing_tracer_form   the intruder's temperature and velocity memory relaxing from a Maxwellian start at θ₀ (the
+//                          scene's start, DSMC's too: initial_state.hpp's tracer_start_theta) on the
 //                          speed grid (tracer_relaxation.hpp), the gas cooling with the intruders' heating, its MSD
 //                          from the l = 1 harmonic there; the gas's settled multi-mode memory; both species' increments
 //                          by the Q-form along those steps (scaled_time_motion.hpp); the kinetic-converged levels.

@@ -53,4 +53,10 @@ std::vector<double> initial_temperatures(const model::InitialState& init, const 
   throw std::logic_error("unknown initial state");
 }
 
+double tracer_start_theta(const model::InitialState& init, const CollisionRates& rates) {
+  if (rates.size() != 2) throw InputError("tracer limit: two species needed (the gas and the intruder)");
+  const std::vector<double> T = initial_temperatures(init, rates);
+  return T[1] / T[0];
+}
+
 }  // namespace granmix::theory

@@ -209,21 +209,21 @@ class ConvergedLevel final : public TheoryLevel {
     return converged_d_ratio_error(rates, converged_state(rates, true)).total();
   }
   // The tracer limit with the intruder's converged stationary θ (the speed grid, with its heating of the gas:
-  // tracer_temperature.hpp) as its start, its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant
-  // ε < 1, intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
+  // tracer_temperature.hpp), its memory that state's (τ_v⁻¹ = ν̄ − ζ/2), where that state exists (constant ε < 1,
+  // intruders under a tenth of the gas's energy budget); the kinetic level's otherwise.
   TracerLimit tracer(const CollisionRates& rates) const override { return tracer_at(rates, converged_intruder(rates)); }
-  // From that start the intruder relaxes (its shape forms, then θ settles: tracer_relaxation.hpp); the gas keeps its own
-  // converged memory (this level's, of the gas alone).
-  std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override {
-    const TracerTemperature c = converged_intruder(rates);  // once: the speed-grid solve is ~0.25 s
-    const TracerLimit t = tracer_at(rates, c);
-    if (!std::isfinite(c.theta)) return closed_tracer_form(t);
+  // Where that state exists the intruder relaxes from the scene's start theta0, a Maxwellian (its shape forms, θ moves
+  // toward the stationary one: tracer_relaxation.hpp); the gas keeps its own converged memory (this level's, of the
+  // gas alone).
+  std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double theta0, double t_end) const override {
+    const TracerTemperature c = converged_intruder(rates);  // ~0.25 s: whether the state exists (and its refusal)
+    if (!std::isfinite(c.theta)) return closed_tracer_form(tracer_at(rates, c));
     const model::Species gas = rates.mixture()[0];
     const CollisionRates alone(model::Mixture({gas}), model::Restitution::constant(1, rates.law().eps(0, 0)), {{rates.chi(0, 0)}});
     const SettledDiffusion d = diffusion_at(alone, {1.0});
     RelaxationOptions opt;
     opt.gas_shape = v_.reshaped;
-    return relaxing_tracer_form(rates, d.memory_of(0), 2.0 / d.tau0, t.theta, t_end, opt);
+    return relaxing_tracer_form(rates, d.memory_of(0), 2.0 / d.tau0, theta0, t_end, opt);
   }
 
  private:

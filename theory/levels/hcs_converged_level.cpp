@@ -52,7 +52,9 @@ class HcsConvergedLevel final : public TheoryLevel {
     return d;
   }
   TracerLimit tracer(const CollisionRates& rates) const override { return base_.tracer(rates); }
-  std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const override { return base_.tracer_form(rates, t_end); }
+  std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double theta0, double t_end) const override {
+    return base_.tracer_form(rates, theta0, t_end);
+  }
 
  private:
   // The grid's error where the answer is known: the same mixture elastic, whose settled Φ_k is the Maxwellian, solved

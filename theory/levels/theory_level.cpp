@@ -9,7 +9,7 @@ namespace granmix::theory {
 
 const char* TheoryLevel::name() const { return descriptor_->name.c_str(); }
 
-std::unique_ptr<TracerForm> TheoryLevel::tracer_form(const CollisionRates& rates, double) const { return closed_tracer_form(tracer(rates)); }
+std::unique_ptr<TracerForm> TheoryLevel::tracer_form(const CollisionRates& rates, double, double) const { return closed_tracer_form(tracer(rates)); }
 
 TheoryLevel::SettledDistribution TheoryLevel::settled_distribution(const CollisionRates& rates) const {
   SettledDistribution d{hcs(rates), {}, {}};

@@ -54,11 +54,11 @@ class TheoryLevel {
     std::function<double(std::size_t k, double lo, double hi)> bin_error;
   };
   virtual SettledDistribution settled_distribution(const CollisionRates& rates) const;
-  // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1: its θ is where the
-  // intruder starts (DSMC's start too).
+  // The binary tracer limit (species 2 an intruder with n₂ → 0) in the level's closure, at T₁ = 1: its settled θ.
   virtual TracerLimit tracer(const CollisionRates& rates) const = 0;
-  // The tracer limit in time to t_end (tracer_form.hpp): closed forms from tracer(rates) unless the level relaxes it.
-  virtual std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double t_end) const;
+  // The tracer limit in time to t_end (tracer_form.hpp): closed forms from tracer(rates), settled from the start (they
+  // take no start), unless the level relaxes it from the intruders' start theta0 (the scene's: tracer_start_theta).
+  virtual std::unique_ptr<TracerForm> tracer_form(const CollisionRates& rates, double theta0, double t_end) const;
   // Whether the level computes its own model error of its settled D_k/D_1, and that error (relative, per species;
   // species 1: 0): kinetic-converged-hcs carries the converged HCS's error estimates through its tracer problem
   // (converged_hcs_diffusion.hpp). A sweep's theory.tsv holds it at the DSMC points as `D_ratio_error`, which a scene
