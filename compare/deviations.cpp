@@ -111,7 +111,8 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
 std::vector<QuantityResult> summarise(const std::vector<Deviation>& d, const std::vector<model::CompareQuantity>& quantities) {
   std::vector<QuantityResult> out;
   for (const auto& q : quantities) {
-    QuantityResult r{q};
+    QuantityResult r;
+    r.spec = q;
     for (const auto& x : d) {
       if (x.quantity != label(q)) continue;
       ++r.points;
