@@ -206,6 +206,16 @@ def test_scene_reads_files_text_and_dicts_alike():
     assert 'bo1-fig02' in repr(s)
 
 
+def test_a_scene_without_a_level_has_its_level_chosen_and_said_as_the_command_line_does(tmp_path):
+    path = ROOT / 'examples' / 'ternary.toml'
+    s = granmix.Scene(path)
+    assert s.level != 'auto' and s.level_choice.startswith('auto chose ' + s.level)
+    run_cli('theory', path, '--out', tmp_path)
+    provenance = (tmp_path / 'example-ternary' / 'theory.tsv').read_text()
+    assert '# level: ' + s.level_choice in provenance
+    assert granmix.Scene(SCENES / 'mg-fig01.toml').level_choice == ''
+
+
 def test_scene_errors_name_file_line_and_key_as_the_command_line_does(tmp_path):
     missing = tmp_path / 'missing.toml'
     with pytest.raises(granmix.SceneError) as e:
