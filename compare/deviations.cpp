@@ -73,7 +73,7 @@ std::vector<Deviation> deviations(const model::Table& theory, const model::Table
       if (!model::covers(q, species)) continue;
       // Same scene grid on both sides: the locations agree to rounding.
       const auto match = std::find_if(dsmc.rows.begin(), dsmc.rows.end(), [&](const std::vector<double>& r) {
-        return int(r[ds]) == species && std::abs(r[dt] - t) <= 1e-12 * std::max(1.0, std::abs(t));
+        return int(r[ds]) == species && same_location(r[dt], t);
       });
       if (match == dsmc.rows.end() || !std::isfinite(row[a]) || !std::isfinite((*match)[b])) continue;
       Deviation d{t, species, label(q), row[a], (*match)[b], (*match)[e], 0.0, 0.0, model::judges(q, t), true};

@@ -4,6 +4,7 @@
 // A judged point passes when |dsmc − theory| <= relative |theory| + z_tol err (model error plus
 // statistical error), or <= absolute. Where theory.tsv also holds the paper level's value
 // (`<column>_paper`), its gap to DSMC is reported beside (paper_rel), not judged.
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -16,6 +17,10 @@ namespace granmix::compare {
 
 // The DSMC error bar used for z and the verdict is at least this fraction of |dsmc| (or |theory|): rounding level.
 inline constexpr double error_floor = 1e-12;
+
+// Whether two tables' locations (t, v* or the swept value) are the same point: both sides use the scene's grid, so
+// they agree to rounding.
+inline bool same_location(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(b)); }
 
 // z needs this many replicas to mean anything (docs/judging.md §6): fewer, and the comparison says so.
 inline constexpr std::size_t replicas_for_z = 8;

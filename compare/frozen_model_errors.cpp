@@ -19,8 +19,6 @@ namespace {
 
 bool computed(const model::CompareQuantity& q) { return !q.correction_from.empty() || !q.error_column.empty(); }
 
-bool same_location(double a, double b) { return std::abs(a - b) <= 1e-12 * std::max(1.0, std::abs(a)); }
-
 }  // namespace
 
 std::optional<double> FrozenModelErrors::at(const std::string& quantity, int species, double x) const {
@@ -113,9 +111,10 @@ std::pair<double, std::string> largest_drift(const FrozenModelErrors& frozen, co
     for (const FrozenPoint& p : points) {
       const std::optional<double> f = frozen.at(quantity, p.species, p.x);
       const double drift = f ? std::abs(p.model_error - *f) / std::max(*f, model_error_floor) : INFINITY;
-      if (drift > worst || std::isnan(drift))
-        worst = std::isnan(drift) ? INFINITY : drift,
+      if (!(drift <= worst)) {  // a NaN drift (NaN model error) counts as the largest
+        worst = std::isnan(drift) ? INFINITY : drift;
         where = fmt::format("{} species {} at x = {:g}: live {:.4g}, frozen {}", quantity, p.species, p.x, p.model_error, f ? fmt::format("{:.4g}", *f) : "absent");
+      }
     }
   for (const auto& [quantity, points] : frozen.points)
     if (!live.points.count(quantity)) return {INFINITY, quantity + ": frozen but no longer computed"};
