@@ -5,6 +5,7 @@
 #include <map>
 #include <regex>
 
+#include <boost/math/distributions/binomial.hpp>
 #include <boost/math/distributions/poisson.hpp>
 #include <boost/math/distributions/students_t.hpp>
 #include <fmt/format.h>
@@ -52,6 +53,9 @@ std::vector<CalibrationRow> calibrate(const std::vector<SeedRun>& runs) {
     r.chance = two_sided_tail(r.replicas, r.z);
     const double expected = std::max(r.chance * double(r.points), 1e-12);
     r.allowed = boost::math::quantile(boost::math::poisson(expected), 0.999);
+    const double per_seed = r.seeds ? double(r.points) / double(r.seeds) : 0.0;
+    r.seed_chance = -std::expm1(per_seed * std::log1p(-std::min(r.chance, 1.0 - 1e-16)));
+    r.seeds_allowed = r.seeds ? boost::math::quantile(boost::math::binomial(double(r.seeds), std::max(r.seed_chance, 1e-12)), 0.999) : 0.0;
     r.ratio_median = quantile_of(v, 0.5), r.ratio_p90 = quantile_of(v, 0.9);
     r.ratio_max = v.empty() ? NAN : *std::max_element(v.begin(), v.end());
   }
@@ -59,11 +63,11 @@ std::vector<CalibrationRow> calibrate(const std::vector<SeedRun>& runs) {
 }
 
 std::string calibration_tsv(const std::vector<CalibrationRow>& rows) {
-  std::string s = "scene\tquantity\treplicas\tz\tseeds\tseeds_failed\tpoints\toutside\tfraction_outside\tchance\tallowed\tratio_median\tratio_p90\tratio_max\tconsistent\n";
+  std::string s = "scene\tquantity\treplicas\tz\tseeds\tseeds_failed\tpoints\toutside\tfraction_outside\tchance\tallowed\tratio_median\tratio_p90\tratio_max\tconsistent\tseed_chance\tseeds_allowed\n";
   for (const CalibrationRow& r : rows)
-    s += fmt::format("{}\t{}\t{}\t{:g}\t{}\t{}\t{}\t{}\t{:.6g}\t{:.6g}\t{:g}\t{:.6g}\t{:.6g}\t{:.6g}\t{}\n", r.scene, r.quantity, r.replicas, r.z, r.seeds,
-                     r.seeds_failed, r.points, r.outside, r.points ? double(r.outside) / double(r.points) : 0.0, r.chance, r.allowed,
-                     r.ratio_median, r.ratio_p90, r.ratio_max, r.consistent() ? 1 : 0);
+    s += fmt::format("{}\t{}\t{}\t{:g}\t{}\t{}\t{}\t{}\t{:.6g}\t{:.6g}\t{:g}\t{:.6g}\t{:.6g}\t{:.6g}\t{}\t{:.6g}\t{:g}\n", r.scene, r.quantity, r.replicas,
+                     r.z, r.seeds, r.seeds_failed, r.points, r.outside, r.points ? double(r.outside) / double(r.points) : 0.0, r.chance,
+                     r.allowed, r.ratio_median, r.ratio_p90, r.ratio_max, r.consistent() ? 1 : 0, r.seed_chance, r.seeds_allowed);
   return s;
 }
 
@@ -80,7 +84,7 @@ nlohmann::ordered_json calibration_json(const std::vector<SeedRun>& runs, const 
     j["quantities"].push_back({{"scene", r.scene}, {"quantity", r.quantity}, {"replicas", r.replicas}, {"z", r.z}, {"seeds", r.seeds},
                                {"seeds_failed", r.seeds_failed}, {"points", r.points}, {"outside", r.outside}, {"chance", r.chance},
                                {"allowed", r.allowed}, {"ratio_median", r.ratio_median}, {"ratio_p90", r.ratio_p90}, {"ratio_max", r.ratio_max},
-                               {"consistent", r.consistent()}});
+                               {"consistent", r.consistent()}, {"seed_chance", r.seed_chance}, {"seeds_allowed", r.seeds_allowed}});
   return j;
 }
 
@@ -91,8 +95,10 @@ std::string calibration_summary(const std::vector<SeedRun>& runs, const std::vec
     points += r.points, outside += r.outside;
     if (r.consistent() && r.outside == 0) continue;
     inconsistent += !r.consistent();
-    s += fmt::format("  {:<24} {:<20} {} of {} points outside (chance allows {:g}), failed in {} of {} seeds, |dev|/bound max {:.3g}: {}\n", r.scene,
-                     r.quantity, r.outside, r.points, r.allowed, r.seeds_failed, r.seeds, r.ratio_max, r.consistent() ? "consistent" : "TOO MANY");
+    s += fmt::format("  {:<24} {:<20} failed in {} of {} seeds (chance allows {:g}); {} of {} points outside (independent points: {:g}), "
+                     "|dev|/bound max {:.3g}: {}\n",
+                     r.scene, r.quantity, r.seeds_failed, r.seeds, r.seeds_allowed, r.outside, r.points, r.allowed, r.ratio_max,
+                     r.consistent() ? "consistent" : "TOO MANY");
   }
   return fmt::format("calibration: {} seeds, {} quantities, {} of {} judged points outside their bound; {} quantities fail more often than "
                      "chance allows\n",

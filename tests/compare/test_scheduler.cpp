@@ -18,7 +18,7 @@
 using namespace granmix;
 
 TEST_CASE("scheduler, one process: records independent of threads, longest first, estimates within 25% of the collisions",
-          "[compare][dsmc]") {
+          "[compare][dsmc][slow]") {
   const model::Scene s = theory::load_scene(test::scene_path("bo1-fig05.toml"));  // a sweep: 3 ensembles x 8 replicas
   dsmc::RunOptions run;
   const auto setups = dsmc::plan_scene_dsmc(s, run);

@@ -50,7 +50,7 @@ TEST_CASE("a user scene without a level is auto, a paper scene without one takes
   CHECK(load_scene_text(ternary("[theory]\nlevel = \"kinetic\"\n"), "my/ternary.toml").theory.level == "kinetic");
 }
 
-TEST_CASE("auto picks the cheapest rung that meets the target, and every cheaper rung tried misses it", "[theory]") {
+TEST_CASE("auto picks the cheapest rung that meets the target, and every cheaper rung tried misses it", "[theory][slow]") {
   for (const double target : {0.03, 0.005, 1e-4}) {
     const model::Scene s = load_scene_text(ternary("[theory]\nauto_target = " + std::to_string(target) + "\n"), "my/ternary.toml");
     const LevelChoice c = choose_level(s);
@@ -83,7 +83,7 @@ TEST_CASE("auto picks the cheapest rung that meets the target, and every cheaper
   CHECK(choose_level(load_scene_text(ternary(), "my/ternary.toml")).why == c.why);
 }
 
-TEST_CASE("auto tries only the rungs that accept the scene and fit the cost budget", "[theory]") {
+TEST_CASE("auto tries only the rungs that accept the scene and fit the cost budget", "[theory][slow]") {
   // A viscoelastic ternary: the speed-grid level (constant restitution only) is never run.
   const model::Scene visco = load_scene_text(ternary("[theory]\nauto_target = 1e-4\n",
                                                      "{ viscoelastic = 0.05, form = \"exact\" }"),
