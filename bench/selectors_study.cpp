@@ -14,6 +14,7 @@
 
 #include "cycle_counter.hpp"
 #include "dsmc/particles.hpp"
+#include "model/errors.hpp"
 #include "study.hpp"
 #include "systems.hpp"
 
@@ -38,6 +39,44 @@ double pilot_time(const BenchSystem& b, double collisions, std::uint64_t seed) {
     if (r.accepted >= 2000 || t > 1e6) return t * collisions / double(std::max<std::uint64_t>(r.accepted, 1));
     t *= 10.0;
   }
+}
+
+std::size_t particles_of(const dsmc::DsmcSetup& s) {
+  std::size_t n = 0;
+  for (std::size_t c : s.counts) n += c;
+  return n;
+}
+
+// The cases the filter keeps, with its overrides applied; none kept is an input error naming what exists.
+std::vector<Case> filtered(std::vector<Case> cases, const CaseFilter& f) {
+  if (!f.any()) return cases;
+  std::vector<std::string> systems, selectors;
+  auto note = [](std::vector<std::string>& v, const std::string& s) {
+    if (std::find(v.begin(), v.end(), s) == v.end()) v.push_back(s);
+  };
+  std::vector<Case> kept;
+  for (Case& c : cases) {
+    note(systems, c.system.name), note(selectors, dsmc::to_string(c.method));
+    const double n = double(particles_of(c.system.setup));
+    if (!f.system.empty() && f.system != c.system.name && f.system != c.family) continue;
+    if (!f.selector.empty() && f.selector != dsmc::to_string(c.method)) continue;
+    if (f.particles > 0 && (n < f.particles / 1.5 || n > f.particles * 1.5)) continue;
+    if (f.t_end > 0) c.t_end = f.t_end;
+    if (f.eps >= 0) c.system.setup.law = model::Restitution::constant(c.system.setup.mixture.size(), f.eps);
+    kept.push_back(std::move(c));
+  }
+  if (kept.empty()) {
+    auto join = [](const std::vector<std::string>& v) {
+      std::string s;
+      for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+      return s;
+    };
+    throw InputError(fmt::format("bench selectors: no case matches --system '{}' --selector '{}' --particles {:g} (allowed: systems {}; their "
+                                 "families one, binary, ternary, exp691, powerlaw, exponential; selectors {}; particles 1e4 with --quick, "
+                                 "else 1e5 and 1e6)",
+                                 f.system, f.selector, f.particles, join(systems), join(selectors)));
+  }
+  return kept;
 }
 
 }  // namespace
@@ -70,6 +109,8 @@ StudyResult selectors_study(const StudyOptions& o) {
     for (const char* shape : {"powerlaw", "exponential"}) add(polydisperse(shape, 100000, 10 * N), {Method::lowrank}, 0.0, shape);
   }
 
+  cases = filtered(std::move(cases), o.filter);
+
   StudyResult out;
   out.name = "selectors";
   out.table.columns = {"series",  "species",    "particles",        "collisions",      "trials",           "seconds",
@@ -86,8 +127,7 @@ StudyResult selectors_study(const StudyOptions& o) {
   std::vector<Measured> measured;
   for (const Case& c : cases) {
     dsmc::DsmcSetup s = c.system.setup;
-    std::size_t particles = 0;
-    for (std::size_t n : s.counts) particles += n;
+    const std::size_t particles = particles_of(s);
     const bool slow = c.method == Method::bird || c.method == Method::bird_global || c.method == Method::timestep;
     const double t_end = c.t_end > 0.0 ? c.t_end : pilot_time(c.system, slow ? budget / 10.0 : budget, o.seed);
     s.method = c.method, s.times = {t_end}, s.replicas = 1, s.threads = 1, s.seed = o.seed;

@@ -30,6 +30,17 @@ struct StudyResult {
   std::vector<std::pair<std::string, model::Table>> tables;  // further tables: DIR/bench/<study>/<name>.tsv
 };
 
+// `granmix bench selectors` on chosen cases only (docs/performance.md, "Timing one case"): each set field narrows the
+// cases or overrides one of their settings.
+struct CaseFilter {
+  std::string system;     // a system ("exp691", "binary", "powerlaw-100") or its family ("powerlaw"); empty: any
+  std::string selector;   // a pair selector (dsmc::to_string of the method: "lowrank", "direct", "bird", …); empty: any
+  double particles = 0;   // > 0: the cases whose particle count lies within a factor 1.5 of it
+  double t_end = 0;       // > 0: every case runs to this time instead of its own
+  double eps = -1;        // in [0, 1]: every case with this restitution instead of its system's
+  bool any() const { return !system.empty() || !selector.empty() || particles > 0 || t_end > 0 || eps >= 0; }
+};
+
 struct StudyOptions {
   int repeats = 3;     // medians of this many runs (the machine is noisy)
   bool quick = false;  // smaller systems: a smoke run for tests and CI
@@ -37,6 +48,7 @@ struct StudyOptions {
   std::function<void(const std::string&)> progress;  // one line per finished case
   std::filesystem::path units_file = "out/units.tsv";  // schedule: measured units of a validate run
   std::filesystem::path scenes_folder;                 // schedule: the scenes whose paper fidelity is simulated
+  CaseFilter filter;                                   // selectors: the cases to run
 };
 
 StudyResult selectors_study(const StudyOptions& o);

@@ -1,4 +1,5 @@
-// granmix bench [STUDY] [--out DIR] [--json] [--repeats N] [--quick] (docs/architecture.md §3): the speed-
+// granmix bench [STUDY] [--out DIR] [--json] [--repeats N] [--quick] [--system S --selector M --particles N --t-end T
+// --eps E] (docs/architecture.md §3; the last five choose the selectors study's cases, docs/performance.md): the speed-
 // against-error studies of bench/. Each writes DIR/bench/<study>/<study>.tsv (provenance, one header
 // line, numbers; the `series` column indexes the labels listed in a comment line), <study>.gp and
 // the figure; --json prints one JSON object per measured case on stdout instead of the tables.
@@ -25,6 +26,7 @@ struct BenchOptions {
   bool json = false, quick = false;
   int repeats = 3;
   std::uint64_t seed = 1;
+  bench::CaseFilter filter;
 };
 
 std::string gnuplot_script(const bench::StudyResult& r) {
@@ -50,8 +52,11 @@ int run(const BenchOptions& o) {
     for (const auto& n : bench::study_names()) known = known || n == s;
     if (!known) throw InputError("bench: unknown study '" + s + "' (allowed: selectors, theory, dsmc-error, methods, gaps, checkpoint, schedule)");
   }
+  if (o.filter.any() && o.study != "selectors")
+    throw InputError("bench: --system, --selector, --particles, --t-end and --eps choose cases of the selectors study (allowed: granmix bench "
+                     "selectors --system S ...)");
   bench::StudyOptions so;
-  so.repeats = o.repeats, so.quick = o.quick, so.seed = o.seed;
+  so.repeats = o.repeats, so.quick = o.quick, so.seed = o.seed, so.filter = o.filter;
   so.units_file = o.units.empty() ? std::filesystem::path(o.out) / "units.tsv" : std::filesystem::path(o.units);
   so.scenes_folder = default_scene_folder();
   // All studies: schedule needs a validation's units.tsv; without one it is skipped, not an error.
@@ -103,6 +108,11 @@ std::function<int()> add_bench_command(CLI::App& app) {
   cmd->add_option("--repeats", o->repeats, "runs per case; the median is reported")->check(CLI::Range(1, 100));
   cmd->add_flag("--quick", o->quick, "small systems: a smoke run (tests, CI)");
   cmd->add_option("--seed", o->seed, "master seed")->check(seed_range());
+  cmd->add_option("--system", o->filter.system, "selectors: only this system or family (one, binary, ternary, exp691, powerlaw[-M], exponential[-M])");
+  cmd->add_option("--selector", o->filter.selector, "selectors: only this pair selector (direct, lowrank, bird, bird-global, timestep)");
+  cmd->add_option("--particles", o->filter.particles, "selectors: only the cases within a factor 1.5 of N particles")->check(CLI::Range(1.0, 1e9));
+  cmd->add_option("--t-end", o->filter.t_end, "selectors: run every chosen case to this time")->check(CLI::Range(1e-9, 1e9));
+  cmd->add_option("--eps", o->filter.eps, "selectors: this coefficient of restitution for every chosen case")->check(CLI::Range(0.0, 1.0));
   return [o]() { return run(*o); };
 }
 

@@ -54,6 +54,32 @@ TEST_CASE("granmix bench selectors --quick --json: one object per case with the 
   CHECK(bad.output.find("selectors, theory, dsmc-error, methods") != std::string::npos);
 }
 
+TEST_CASE("granmix bench selectors: --system, --selector, --particles, --t-end and --eps time chosen cases alone - none matching exit 2", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("bench-filter");
+  const std::string one = "selectors --quick --json --repeats 1 --system binary --selector direct --t-end 0.5";
+  const std::vector<nlohmann::json> a = bench_json(one, d);
+  REQUIRE(a.size() == 1);
+  CHECK(a[0]["selector"] == "direct");
+  CHECK(a[0]["system"] == "binary");
+  CHECK(a[0]["particles"] == 10000);
+  CHECK(a[0]["t_end"].get<double>() == 0.5);
+  // ε = 0.9 instead of the binary's 0.5: the gas cools less, so more collisions by t = 0.5.
+  const std::vector<nlohmann::json> b = bench_json(one + " --eps 0.9", d);
+  REQUIRE(b.size() == 1);
+  CHECK(b[0]["collisions"].get<double>() > a[0]["collisions"].get<double>());
+  // A family and a particle count: the power-law mixtures of 1e4 particles under low-rank selection.
+  const std::vector<nlohmann::json> f = bench_json("selectors --quick --json --repeats 1 --system powerlaw --selector lowrank --particles 1e4 --t-end 0.01", d);
+  CHECK(f.size() == 3);
+  for (const auto& j : f) CHECK(j["system"].get<std::string>().rfind("powerlaw-", 0) == 0);
+  const auto none = test::run_granmix("bench selectors --quick --system nosuch --out " + d.string());
+  CHECK(none.code == 2);
+  CHECK(none.output.find("no case matches --system 'nosuch'") != std::string::npos);
+  CHECK(none.output.find("allowed: systems one, binary") != std::string::npos);
+  const auto other = test::run_granmix("bench theory --quick --system binary --out " + d.string());
+  CHECK(other.code == 2);
+  CHECK(other.output.find("choose cases of the selectors study") != std::string::npos);
+}
+
 TEST_CASE("granmix bench theory --quick --json: the two levels' cost scene by scene", "[compare]") {
   const auto d = test::fresh_dir("bench-theory");
   const std::vector<nlohmann::json> objects = bench_json("theory --quick --json --repeats 1", d);

@@ -455,7 +455,7 @@ TEST_CASE("granmix validate: every scene of a folder - summary.tsv and summary.j
   CHECK(std::filesystem::exists(d / "out2" / "mg-fig01" / "report.json"));
 }
 
-TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised - G = exp(2 beta v/zeta) Phi", "[compare]") {
+TEST_CASE("granmix theory mg-fig07: the first-Sonine Phi on shells - normalised - G = exp(2 beta v/zeta) Phi", "[compare][slow]") {
   // The paper level's columns (the judged level is the converged HCS's density: its Φ normalised too).
   const Tsv t = theory_of("mg-fig07-alpha0.5");
   REQUIRE(t.columns.size() > 11);

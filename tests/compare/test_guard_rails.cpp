@@ -74,7 +74,7 @@ void check_guard_rails(const std::vector<std::string>& scenes, const std::string
 
 }  // namespace
 
-TEST_CASE("guard rails: judged columns of compare outputs hold no unmarked nan or inf", "[compare]") {
+TEST_CASE("guard rails: judged columns of compare outputs hold no unmarked nan or inf", "[compare][slow]") {
   check_guard_rails({"bo1-fig02", "mg-fig04-mu2"}, "guard-rails");
 }
 
