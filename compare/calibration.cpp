@@ -53,6 +53,8 @@ std::vector<CalibrationRow> calibrate(const std::vector<SeedRun>& runs) {
     r.chance = two_sided_tail(r.replicas, r.z);
     const double expected = std::max(r.chance * double(r.points), 1e-12);
     r.allowed = boost::math::quantile(boost::math::poisson(expected), 0.999);
+    // A seed of n points fails by chance with probability at most 1 − (1 − p)^n, however its points correlate (Šidák's
+    // inequality; docs/validation.md, "Held-out calibration"): its count over the seeds is binomial at worst.
     const double per_seed = r.seeds ? double(r.points) / double(r.seeds) : 0.0;
     r.seed_chance = -std::expm1(per_seed * std::log1p(-std::min(r.chance, 1.0 - 1e-16)));
     r.seeds_allowed = r.seeds ? boost::math::quantile(boost::math::binomial(double(r.seeds), std::max(r.seed_chance, 1e-12)), 0.999) : 0.0;
