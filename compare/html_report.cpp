@@ -104,10 +104,11 @@ std::string summary_table(const ordered_json& summary) {
       continue;
     }
     for (const auto& [label, q] : sc["quantities"].items()) {
-      const bool pass = q.value("pass", false);
+      // "chance": failed at this seed, passed its confirmation (docs/judging.md §2.1)
+      const bool chance = q.value("verdict", "") == "chance", pass = q.value("pass", false) || chance;
       s += "<tr><td>" + link + "</td><td>" + html_escape(label) + "</td><td class=\"num\">" + number(q, "max_rel", "{:.4f}") +
            "</td><td class=\"num\">" + number(q, "max_z", "{:.2f}") + "</td><td>" + tolerance_cell(q.value("tolerance", ordered_json())) +
-           "</td><td class=\"" + (pass ? "pass" : "fail") + "\">" + (pass ? "yes" : "NO") + "</td></tr>\n";
+           "</td><td class=\"" + (pass ? "pass" : "fail") + "\">" + (chance ? "chance" : pass ? "yes" : "NO") + "</td></tr>\n";
     }
   }
   return s + "</table>\n";
@@ -189,6 +190,13 @@ std::string html_report(const std::filesystem::path& out) {
                    "<a href=\"summary.tsv\">summary.tsv</a> <a href=\"summary.json\">summary.json</a></p>\n",
                    summary["scenes"].size(), passed, quantities, summary.value("errors", ordered_json::array()).size(), granmix::version,
                    granmix::git_sha, utc_now_iso8601(), rule_text);
+  if (summary.contains("confirmation") && summary["confirmation"].is_object()) {
+    const ordered_json& c = summary["confirmation"];
+    s += fmt::format("<p>Confirmation: {} scene(s) that failed on their points' statistics, measured again at seed {} with {}x the "
+                     "replicas (<a href=\"confirmation/index.html\">confirmation/</a>); a quantity fails when it fails both times, "
+                     "\"chance\" when its confirmation passes.</p>\n",
+                     c.value("scenes", ordered_json::array()).size(), c.value("seed", std::uint64_t{0}), c.value("replica_factor", 0));
+  }
   if (!summary.value("errors", ordered_json::array()).empty()) {
     s += "<div class=\"errors\"><b>Scenes that did not run:</b><ul>";
     for (const auto& e : summary["errors"]) s += "<li>" + render(e) + "</li>";

@@ -243,6 +243,20 @@ void abort(int code) {
   finish();
 }
 
+std::string share_from_root(const std::string& text) {
+#ifdef GRANMIX_MPI
+  const World& w = world();
+  if (!w.mpi || w.size == 1) return text;
+  long long n = static_cast<long long>(text.size());
+  check(MPI_Bcast(&n, 1, MPI_LONG_LONG, 0, MPI_COMM_WORLD), "MPI_Bcast (length)");
+  std::string out = w.rank == 0 ? text : std::string(static_cast<std::size_t>(n), '\0');
+  if (n > 0) check(MPI_Bcast(out.data(), static_cast<int>(n), MPI_CHAR, 0, MPI_COMM_WORLD), "MPI_Bcast (text)");
+  return out;
+#else
+  return text;
+#endif
+}
+
 GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threads) {
   const World& w = world();
   const auto start = std::chrono::steady_clock::now();

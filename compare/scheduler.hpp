@@ -55,6 +55,10 @@ class GatheredReplicas : public dsmc::ReplicaSource {
 // that fails stops the run with its error (rank and unit named). Progress on stderr (rank 0).
 GatheredReplicas run_units(const std::vector<dsmc::DsmcSetup>& setups, int threads);
 
+// Rank 0's text on every rank (a decision only rank 0 can make, e.g. which scenes validate confirms); without
+// MPI, the text itself.
+std::string share_from_root(const std::string& text);
+
 // MPI_Finalize if MPI was initialised; main calls it after the command.
 void finish();
 // After an error: with several ranks, MPI_Abort with the exit code (the others may be waiting on this

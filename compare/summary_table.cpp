@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "confirmation.hpp"
 #include "provenance.hpp"
 #include "deviations.hpp"
 #include "tsv_writer.hpp"
@@ -40,10 +41,10 @@ std::string summary_lines(const SceneOutcome& o) {
 }
 
 void write_summary(const std::filesystem::path& out, const std::vector<SceneOutcome>& all, const std::vector<std::string>& errors,
-                   const scheduler::GatheredReplicas& run) {
+                   const scheduler::GatheredReplicas& run, const Confirmation* confirmation) {
   std::string tsv = "# granmix validate summary (" + utc_now_iso8601() + ")\n";
   tsv += "scene\tquantity\tmax_rel\tmax_z\trelative_tol\tz_tol\tpass\ttheory_seconds\ttheory_error\tdsmc_seconds\tcollisions_per_second\tabsolute_tol\t"
-         "paper_max_rel\tunresolved\n";
+         "paper_max_rel\tunresolved\tverdict\n";
   nlohmann::ordered_json j = nlohmann::ordered_json::array();
   for (const auto& o : all) {
     nlohmann::ordered_json scene = {{"scene", o.scene}, {"pass", o.pass}, {"theory_seconds", o.theory_seconds},
@@ -51,20 +52,28 @@ void write_summary(const std::filesystem::path& out, const std::vector<SceneOutc
                                     {"collisions_per_second", o.collisions_per_second}, {"quantities", nlohmann::ordered_json::object()},
                                     {"warnings", o.warnings}};
     if (o.quantities.empty())
-      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\t0\n", o.scene, int(o.pass), o.theory_seconds, o.theory_error,
-                         o.dsmc_seconds, o.collisions_per_second);
+      tsv += fmt::format("{}\t-\tnan\tnan\tnan\tnan\t{}\t{}\t{}\t{}\t{}\tnan\tnan\t0\t{}\n", o.scene, int(o.pass), o.theory_seconds,
+                         o.theory_error, o.dsmc_seconds, o.collisions_per_second, o.pass ? "pass" : "FAIL");
     for (const auto& q : o.quantities) {
-      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z, q.spec.relative,
-                         q.spec.z, int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second, q.spec.absolute,
-                         q.max_paper_rel, q.unresolved);
+      const std::string v = verdict(o.scene, q, confirmation);
+      tsv += fmt::format("{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\t{}\n", o.scene, label(q.spec), q.max_rel, q.max_z,
+                         q.spec.relative, q.spec.z, int(q.pass()), o.theory_seconds, o.theory_error, o.dsmc_seconds, o.collisions_per_second,
+                         q.spec.absolute, q.max_paper_rel, q.unresolved, v);
       scene["quantities"][label(q.spec)] = {{"max_rel", q.max_rel}, {"max_z", q.max_z}, {"tolerance", tolerance_json(q.spec)},
-                                          {"pass", q.pass()}, {"unresolved", q.unresolved}};
+                                          {"pass", q.pass()}, {"unresolved", q.unresolved}, {"verdict", v}};
       if (std::isfinite(q.max_paper_rel)) scene["quantities"][label(q.spec)]["paper_max_rel"] = q.max_paper_rel;
     }
     j.push_back(scene);
   }
-  nlohmann::ordered_json summary = {{"pass", errors.empty() && std::all_of(all.begin(), all.end(), [](const auto& o) { return o.pass; })},
+  nlohmann::ordered_json confirmed = nullptr;  // no confirmation ran
+  if (confirmation && (!confirmation->scenes.empty() || !confirmation->errors.empty())) {
+    confirmed = {{"seed", confirmation->seed}, {"replica_factor", confirmation->factor}, {"folder", "confirmation"},
+                 {"scenes", nlohmann::ordered_json::array()}, {"errors", confirmation->errors}};
+    for (const auto& o : confirmation->scenes) confirmed["scenes"].push_back(o.scene);
+  }
+  nlohmann::ordered_json summary = {{"pass", errors.empty() && std::all_of(all.begin(), all.end(), [&](const auto& o) { return passes(o, confirmation); })},
                                     {"scenes", j},
+                                    {"confirmation", confirmed},
                                     {"errors", errors},
                                     {"ranks", run.ranks},
                                     {"threads", run.threads},
