@@ -3,6 +3,9 @@
 BUILD ?= build
 JOBS ?= $(shell nproc)
 OUT ?= out
+# make validate judges the suite at a held-out seed, one no design decision used (docs/validation.md), with its
+# confirmation of failures (docs/judging.md §2.1). SEED=1 gives the validation record's tables.
+SEED ?= 150
 SANITIZE_BUILD ?= build-asan
 FUZZ_BUILD ?= build-fuzz
 FUZZ_SECONDS ?= 300
@@ -41,7 +44,7 @@ install: build
 	else echo "install: no Python module was built (python3-dev, pybind11-dev: scripts/install-deps.sh)"; fi
 
 validate: build
-	@$(BUILD)/granmix validate --fidelity quick --out $(OUT)
+	@$(BUILD)/granmix validate --fidelity quick --seed $(SEED) --out $(OUT)
 
 figures: build
 	@$(BUILD)/granmix validate --fidelity paper --out $(OUT)/paper

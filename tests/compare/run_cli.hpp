@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -42,6 +43,15 @@ inline CliResult run_granmix_split(const std::string& args) {
   r.error.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
   return r;
 }
+
+#ifdef GRANMIX_MPIEXEC
+// granmix under mpirun as the CI runs it: more ranks than cores, as root in a container.
+inline CliResult run_mpi(int ranks, const std::string& args) {
+  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+  return run_shell(std::string(GRANMIX_MPIEXEC) + " --oversubscribe -n " + std::to_string(ranks) + " " + GRANMIX_EXE + " " + args + " 2>&1");
+}
+#endif
 
 inline void write_file(const std::filesystem::path& p, const std::string& text) { std::ofstream(p) << text; }
 

@@ -9,6 +9,7 @@
 #include "compare/commands.hpp"
 #include "compare/confirmation.hpp"
 #include "run_cli.hpp"
+#include "tsv_reader.hpp"
 
 using namespace granmix;
 using namespace granmix::compare;
@@ -158,3 +159,26 @@ TEST_CASE("confirmation: validate measures a failing scene again with 4x the rep
   CHECK(both.code == 2);
   CHECK(both.output.find("--confirm belongs to a single seed") != std::string::npos);
 }
+
+#ifdef GRANMIX_MPIEXEC
+TEST_CASE("mpirun -n 3 granmix validate: the confirmation's scenes, seed and tables those of one process", "[compare][dsmc]") {
+  const auto d = test::fresh_dir("confirmation-mpi");
+  std::filesystem::create_directories(d / "scenes");
+  test::write_file(d / "scenes" / "toy.toml", toy_scene(R"({ name = "T", species = [1], relative = 0.001, z = 2, why = "a bound chance breaks" })"));
+  const std::string scenes = " --scenes " + (d / "scenes").string();
+  const auto serial = test::run_granmix("validate --seed 2" + scenes + " --out " + (d / "serial").string());
+  const auto mpi = test::run_mpi(3, "validate --seed 2" + scenes + " --out " + (d / "mpi").string());
+  INFO(serial.output << mpi.output);
+  CHECK(serial.code == 0);
+  CHECK(mpi.code == 0);
+  for (const char* f : {"toy/dsmc.tsv", "confirmation/toy/dsmc.tsv", "confirmation/toy/deviations.tsv"}) {
+    INFO(f);
+    const std::string a = test::data_lines(d / "serial" / f);
+    CHECK(!a.empty());
+    CHECK(a == test::data_lines(d / "mpi" / f));
+  }
+  const auto a = nlohmann::json::parse(text_of(d / "serial" / "summary.json")), b = nlohmann::json::parse(text_of(d / "mpi" / "summary.json"));
+  CHECK(a["confirmation"] == b["confirmation"]);
+  CHECK(b["scenes"][0]["quantities"]["T[1]"]["verdict"] == "chance");
+}
+#endif

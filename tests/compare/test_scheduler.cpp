@@ -50,21 +50,7 @@ TEST_CASE("scheduler, one process: records independent of threads, longest first
 
 #ifdef GRANMIX_MPIEXEC
 namespace {
-// mpirun as the CI runs it: more ranks than cores, as root in a container.
-test::CliResult run_mpi(int ranks, const std::string& args) {
-  setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
-  setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
-  const std::string launcher = std::string(GRANMIX_MPIEXEC) + " --oversubscribe -n " + std::to_string(ranks) + " " + GRANMIX_EXE;
-  const std::string cmd = launcher + " " + args + " 2>&1";
-  test::CliResult r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  while (std::fgets(buf, sizeof buf, p)) r.output += buf;
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using test::run_mpi;
 
 nlohmann::json without_timings(nlohmann::json j) {
   for (const char* k : {"theory_seconds", "dsmc_seconds", "collisions_per_second"}) j.erase(k);

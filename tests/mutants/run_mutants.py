@@ -3,14 +3,14 @@
 
 Each mutant of mutants.toml is a few exact text edits applied to a scratch copy of the committed
 tree (git archive of HEAD or MUTANTS_REV, kept between runs so rebuilds are incremental; the real
-tree is never edited). Per mutant the stages are: build granmix, `granmix validate --fidelity quick`,
-and only if validate passes, build the tests and run ctest (without the tests labelled `checkout`,
+tree is never edited). Per mutant the stages are: build granmix, `granmix validate --fidelity quick`
+(seed 1, a failing quantity confirmed at 4x the replicas: docs/judging.md §2.1), and only if validate passes, build the tests and run ctest (without the tests labelled `checkout`,
 which need the git checkout and the unmutated tree); then the files are restored. Before the first
 mutant, ctest runs once on the unmutated tree: a test that fails there is not counted for any mutant.
 A mutant whose search text is not found exactly once is `stale`, never skipped silently.
 
 Each mutant gets one outcome, from the first stage that does not pass:
-  caught: deviation     validate exit 1 with a failing scene:quantity row, or a failing ctest test
+  caught: deviation     validate exit 1 with a scene:quantity row of verdict FAIL, or a failing ctest test
   caught: solver error  validate exit 3 (a numerical failure stopped the run), or exit 1 where only
                         scenes that stopped with an error fail
   crash                 a signal, or any other exit code (a ctest test that crashed or was not run)
@@ -174,8 +174,9 @@ def stage_build(cmds, log: Path, what: str):
 
 
 def validate_failures(out_dir: Path):
-    """Failing scene:quantity rows of summary.tsv, and the scenes that stopped with an error
-    (summary.json's errors) as (scene:ERROR, message)."""
+    """Failing scene:quantity rows of summary.tsv (verdict FAIL: failed, and failed again at its confirmation;
+    a table without the verdict column: pass 0), and the scenes that stopped with an error (summary.json's
+    errors) as (scene:ERROR, message)."""
     failed, errors = [], []
     tsv = out_dir / "summary.tsv"
     if tsv.is_file():
@@ -183,7 +184,7 @@ def validate_failures(out_dir: Path):
         head = lines[0].split("\t") if lines else []
         for l in lines[1:]:
             row = dict(zip(head, l.split("\t")))
-            if row.get("pass") == "0":
+            if (row["verdict"] == "FAIL") if "verdict" in row else row.get("pass") == "0":
                 failed.append(f"{row['scene']}:{row['quantity']}" if row["quantity"] != "-" else row["scene"])
     js = out_dir / "summary.json"
     if js.is_file():
