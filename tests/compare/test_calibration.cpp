@@ -11,6 +11,7 @@
 #include "compare/calibration.hpp"
 #include "model/errors.hpp"
 #include "run_cli.hpp"
+#include "toy_scene.hpp"
 
 using namespace granmix;
 using namespace granmix::compare;
@@ -128,23 +129,7 @@ TEST_CASE("calibration: --seeds takes A-B or A within [0, 2^53] - anything else 
 TEST_CASE("calibration: validate --seeds runs the suite at each seed and writes calibration.tsv and .json", "[compare][dsmc]") {
   const auto d = test::fresh_dir("calibration");
   std::filesystem::create_directories(d / "scenes");
-  test::write_file(d / "scenes" / "own.toml", R"([scene]
-name = "own"
-[mixture]
-species = [{ mass = 1, diameter = 1, density = 0.05 }, { mass = 4, diameter = 1.3, density = 0.05 }]
-[collisions]
-restitution = 0.8
-[time]
-end = 2
-points = 4
-spacing = "linear"
-[observables]
-temperatures = true
-[theory]
-level = "kinetic"
-[dsmc]
-quick = { particles = 400, replicas = 8 }
-)");
+  test::write_file(d / "scenes" / "own.toml", test::toy_binary_scene("own"));
   const auto r = test::run_granmix("validate --seeds 101-102 --scenes " + (d / "scenes").string() + " --out " + (d / "out").string());
   INFO(r.output);
   CHECK(r.code <= 1);

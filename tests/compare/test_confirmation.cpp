@@ -9,6 +9,7 @@
 #include "compare/commands.hpp"
 #include "compare/confirmation.hpp"
 #include "run_cli.hpp"
+#include "toy_scene.hpp"
 #include "tsv_reader.hpp"
 
 using namespace granmix;
@@ -37,27 +38,8 @@ std::string text_of(const std::filesystem::path& p) {
   return s.str();
 }
 
-// The toy binary of the command tests, judged with the given [compare] line (a few seconds of DSMC).
-std::string toy_scene(const std::string& compare) {
-  return R"([scene]
-name = "toy"
-[mixture]
-species = [{ mass = 1, diameter = 1, density = 0.05 }, { mass = 4, diameter = 1.3, density = 0.05 }]
-[collisions]
-restitution = 0.8
-[time]
-end = 2
-points = 4
-spacing = "linear"
-[observables]
-temperatures = true
-[theory]
-level = "kinetic"
-[dsmc]
-quick = { particles = 400, replicas = 8 }
-[compare]
-quantities = [ )" + compare + " ]\n";
-}
+// The toy binary judged with the given [compare] entry.
+std::string toy_scene(const std::string& compare) { return test::toy_binary_scene("toy", "[compare]\nquantities = [ " + compare + " ]\n"); }
 
 }  // namespace
 
