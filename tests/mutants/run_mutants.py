@@ -4,7 +4,9 @@
 Each mutant of mutants.toml is a few exact text edits applied to a scratch copy of the committed
 tree (git archive of HEAD or MUTANTS_REV, kept between runs so rebuilds are incremental; the real
 tree is never edited). Per mutant the stages are: build granmix, `granmix validate --fidelity quick`
-(seed 1, a failing quantity confirmed at 4x the replicas: docs/judging.md §2.1), and only if validate passes, build the tests and run ctest (without the tests labelled `checkout`,
+(seed 1, --confirm 0; then the failing scenes one at a time, cheapest first, each validated alone with its
+confirmation at 4x the replicas up to the first that fails again: validate's verdict, docs/judging.md §2.1),
+and only if validate passes, build the tests and run ctest (without the tests labelled `checkout`,
 which need the git checkout and the unmutated tree); then the files are restored. Before the first
 mutant, ctest runs once on the unmutated tree: a test that fails there is not counted for any mutant.
 A mutant whose search text is not found exactly once is `stale`, never skipped silently.
@@ -252,14 +254,49 @@ def classify_ctest(rc, out: str, baseline=frozenset()):
     return CRASH, f"ctest: exit {rc} without a failing test listed"
 
 
+def failing_scenes(out_dir: Path):
+    """The scenes of summary.tsv with a failing row, cheapest DSMC first (their confirmation order)."""
+    cost = {}
+    tsv = out_dir / "summary.tsv"
+    lines = [l for l in tsv.read_text().splitlines() if l and not l.startswith("#")] if tsv.is_file() else []
+    head = lines[0].split("\t") if lines else []
+    for l in lines[1:]:
+        row = dict(zip(head, l.split("\t")))
+        if row.get("pass") == "0":
+            cost[row["scene"]] = float(row.get("dsmc_seconds") or 0)
+    return sorted(cost, key=lambda k: (cost[k], k))
+
+
+def confirm_validate(first, confirm, logs: Path, mid: str, cwd=None):
+    """validate's confirmation, one failing scene at a time, cheapest first, up to the first that fails again
+    (docs/judging.md §2.1): validate's own verdict with no more DSMC than that verdict needs. `first` is the
+    deviation found with --confirm 0; confirm(scene) gives the command that validates the scene alone with
+    its confirmation, and the folder it writes. (outcome, detail), or None when no failure repeats."""
+    for scene in first:
+        cmd, out_dir = confirm(scene)
+        rc, out = run(cmd, logs / f"{mid}.confirm-{scene}.log", cwd=cwd)
+        r = classify_validate(rc, out, out_dir)
+        if r:
+            return r[0], r[1].replace("validate: ", "validate (confirmed): ", 1)
+    return None
+
+
 def run_stages(build_cmds, validate_cmd, build_tests_cmds, ctest_cmd, logs: Path, mid: str, out_dir: Path,
-               cwd=None, ctest_cwd=None, ctest_tmp=None, baseline=frozenset()):
-    """The stages of one mutant, stopping at the first that does not pass: (outcome, stage, detail)."""
+               cwd=None, ctest_cwd=None, ctest_tmp=None, baseline=frozenset(), confirm=None):
+    """The stages of one mutant, stopping at the first that does not pass: (outcome, stage, detail).
+    confirm: see confirm_validate; None takes validate's first judgement as its verdict."""
     r = stage_build(build_cmds, logs / f"{mid}.build.log", "granmix")
     if r:
         return r[0], "build", r[1]
     rc, out = run(validate_cmd, logs / f"{mid}.validate.log", cwd=cwd)
     r = classify_validate(rc, out, out_dir)
+    unconfirmed = ""
+    if r and r[0] == DEVIATION and confirm:
+        scenes = failing_scenes(out_dir)
+        c = confirm_validate(scenes, confirm, logs, mid, cwd=cwd)
+        if c is None:
+            unconfirmed = f" (validate failed at seed 1, none confirmed: {' '.join(scenes)})"
+        r = c
     if r:
         return r[0], "validate", r[1]
     r = stage_build(build_tests_cmds, logs / f"{mid}.build-tests.log", "tests")
@@ -268,8 +305,8 @@ def run_stages(build_cmds, validate_cmd, build_tests_cmds, ctest_cmd, logs: Path
     rc, out = run(ctest_cmd, logs / f"{mid}.ctest.log", cwd=ctest_cwd, tmp=ctest_tmp)
     r = classify_ctest(rc, out, baseline)
     if r:
-        return r[0], "ctest", r[1]
-    return MISSED, "", ""
+        return r[0], "ctest", r[1] + unconfirmed
+    return MISSED, "", unconfirmed.strip(" ()")
 
 
 def build_cmds(src: Path, bld: Path, target=None):
@@ -320,12 +357,25 @@ def run_mutant(m, src: Path, bld: Path, logs: Path, baseline=frozenset()):
         return STALE, "", why
     try:
         with tempfile.TemporaryDirectory(prefix="granmix-mutant-") as out_dir:
-            validate = [str(bld / "granmix"), "validate", "--fidelity", "quick", "--out", out_dir, "--threads", str(JOBS),
-                        "--scenes", str(src / "compare" / "scenes")]
+            granmix = [str(bld / "granmix"), "validate", "--fidelity", "quick", "--threads", str(JOBS)]
+            validate = granmix + ["--confirm", "0", "--out", out_dir, "--scenes", str(src / "compare" / "scenes")]
+
+            def confirm(scene):
+                # The scene alone in a folder .../compare/scenes beside its frozen model errors (as validate wants them).
+                folder = Path(out_dir) / "confirm" / scene
+                (folder / "compare" / "scenes").mkdir(parents=True, exist_ok=True)
+                shutil.copy(src / "compare" / "scenes" / f"{scene}.toml", folder / "compare" / "scenes")
+                table = src / "compare" / "model-errors" / f"{scene}.tsv"
+                if table.is_file():
+                    (folder / "compare" / "model-errors").mkdir(exist_ok=True)
+                    shutil.copy(table, folder / "compare" / "model-errors")
+                return granmix + ["--out", str(folder / "out"), "--scenes", str(folder / "compare" / "scenes")], folder / "out"
+
             # The tests are built only when validate has not caught the mutant: that saves recompiling every
             # test that includes a mutated header.
             return run_stages(build_cmds(src, bld, "granmix"), validate, build_cmds(src, bld)[1:], ctest_cmd(), logs,
-                              m["id"], Path(out_dir), cwd=src, ctest_cwd=bld, ctest_tmp=bld.parent / "tmp", baseline=baseline)
+                              m["id"], Path(out_dir), cwd=src, ctest_cwd=bld, ctest_tmp=bld.parent / "tmp", baseline=baseline,
+                              confirm=confirm)
     finally:
         for f, t in originals.items():
             (src / f).write_text(t)
@@ -625,6 +675,30 @@ def self_test():
                          "status": status, "stage": stage, "caught_by": detail,
                          "seconds": round(time.monotonic() - start), "files": "-", "models": name})
         expect("the failing row is named", rows[1]["caught_by"], "validate: s:T")
+        # The confirmation: a first failure counts only when a scene fails again, cheapest scene first.
+        confirm_dir = tmp / "confirm"
+        confirm_dir.mkdir()
+        two_rows = sh(f"printf 'scene\\tquantity\\tpass\\tdsmc_seconds\\nbig\\tT\\t0\\t9\\nsmall\\tT\\t0\\t1\\n' > {out_dir}/summary.tsv; exit 1")
+        tried = []
+
+        def confirm_with(repeats):
+            def confirm(scene):
+                tried.append(scene)
+                d = confirm_dir / scene
+                d.mkdir(exist_ok=True)
+                fails = sh(f"printf 'scene\\tquantity\\tpass\\tverdict\\n{scene}\\tT\\t0\\tFAIL\\n' > {d}/summary.tsv; exit 1")
+                return (fails if scene in repeats else passing), d
+            return confirm
+
+        for f in out_dir.iterdir():
+            f.unlink()
+        got = run_stages([passing], two_rows, [passing], passing, logs, "stub", out_dir, confirm=confirm_with({"big"}))
+        expect("a failure confirmed in the second scene tried: caught, cheapest tried first",
+               (got[0], got[1], got[2], tried), (DEVIATION, "validate", "validate (confirmed): big:T", ["small", "big"]))
+        tried.clear()
+        got = run_stages([passing], two_rows, [passing], passing, logs, "stub", out_dir, confirm=confirm_with(set()))
+        expect("no failure confirmed: validate counts as passed, the mutant is missed and says why",
+               got, (MISSED, "", "validate failed at seed 1, none confirmed: small big"))
         expect("the stopped scene is named", rows[2]["caught_by"], "validate: s:ERROR (solver gave up)")
         expect("a failing ctest test is named, its timeouts noted",
                classify_ctest(8, ctest_out.format("Failed", "Timeout"))[1], "ctest: model: a test [timeout: theory: b]")
