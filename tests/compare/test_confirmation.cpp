@@ -54,7 +54,7 @@ TEST_CASE("confirmation: its seed is the run's seed moved by 2^52, within [0, 2^
   CHECK(confirmation_seed(124) == (1ULL << 52) + 124);
 }
 
-TEST_CASE("confirmation: only failures on the points' statistics are confirmed; a quantity fails when its confirmation fails too",
+TEST_CASE("confirmation: only failures on the points' statistics are confirmed - a quantity fails when its confirmation fails too",
           "[compare]") {
   const SceneOutcome first = scene("a", {quantity("T", 20, 0), quantity("msd", 20, 3), quantity("c", 20, 2, 2), quantity("gamma", 0, 0)});
   const SceneOutcome fine = scene("b", {quantity("T", 20, 0)});
