@@ -156,11 +156,6 @@ void write_validation(const std::filesystem::path& out, const Validation& v, con
   write_html_report(out);
 }
 
-bool passed(const SeedRun& run, const Confirmation* confirmation) {
-  return run.errors.empty() &&
-         std::all_of(run.scenes.begin(), run.scenes.end(), [&](const SceneOutcome& s) { return passes(s, confirmation); });
-}
-
 // The scenes of `first` that failed on their points' statistics, measured again at the confirmation seed with
 // o.confirm times their replicas into OUT/confirmation/ (confirmation.hpp). Every rank takes part in the DSMC.
 Confirmation confirm(const RunOptions& o, const Validation& first) {
@@ -191,7 +186,7 @@ Confirmation confirm(const RunOptions& o, const Validation& first) {
 
 // "all pass" or "FAILURES", and the quantities whose failure a confirmation did not repeat.
 std::string verdict_line(const SeedRun& run, const Confirmation& c) {
-  std::string line = passed(run, &c) ? "all pass" : "FAILURES";
+  std::string line = passes(run.scenes, run.errors, &c) ? "all pass" : "FAILURES";
   std::string chance;
   std::size_t n = 0;
   for (const SceneOutcome& s : run.scenes)
@@ -230,7 +225,7 @@ std::function<int()> add_validate_command(CLI::App& app) {
       const Confirmation c = o->confirm > 1 ? confirm(*o, first) : Confirmation{};
       if (!scheduler::root()) return 0;
       write_validation(o->out, first, &c);
-      const bool pass = passed(first.run, &c);
+      const bool pass = passes(first.run.scenes, first.run.errors, &c);
       std::printf("validate (%s): %zu scenes, %s -> %s/summary.tsv, summary.json\n", o->fidelity.c_str(),
                   first.run.scenes.size() + first.run.errors.size(), verdict_line(first.run, c).c_str(), o->out.c_str());
       return pass ? 0 : 1;

@@ -40,4 +40,8 @@ bool passes(const SceneOutcome& o, const Confirmation* confirmation) {
                      [&](const QuantityResult& q) { return verdict(o.scene, q, confirmation) != "FAIL"; });
 }
 
+bool passes(const std::vector<SceneOutcome>& scenes, const std::vector<std::string>& errors, const Confirmation* confirmation) {
+  return errors.empty() && std::all_of(scenes.begin(), scenes.end(), [&](const SceneOutcome& o) { return passes(o, confirmation); });
+}
+
 }  // namespace granmix::compare

@@ -43,5 +43,7 @@ struct Confirmation {
 std::string verdict(const std::string& scene, const QuantityResult& q, const Confirmation* confirmation);
 // The scene passes validate: every quantity "pass" or "chance" (a theory-only scene: its own pass).
 bool passes(const SceneOutcome& o, const Confirmation* confirmation);
+// The run passes validate: no scene error, and every scene passes (its exit code, summary.json's "pass").
+bool passes(const std::vector<SceneOutcome>& scenes, const std::vector<std::string>& errors, const Confirmation* confirmation);
 
 }  // namespace granmix::compare
